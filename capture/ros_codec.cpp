@@ -1,0 +1,1 @@
+#include "capture/ros_codec.hpp"

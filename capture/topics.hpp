@@ -1,0 +1,25 @@
+#pragma once
+// Default topic and frame names of a littermap run bag. Bags from other robots can use other
+// topic names; every stage that reads a bag takes the names as options defaulting to these.
+
+namespace littermap::topics {
+
+inline constexpr const char* kScan = "/scan";                                  // LaserScan
+inline constexpr const char* kOdometry = "/odom";                              // Odometry
+inline constexpr const char* kColor = "/camera/color/image_raw/compressed";    // JPEG
+inline constexpr const char* kDepth = "/camera/depth/image_raw/compressed";    // 16-bit PNG, mm
+inline constexpr const char* kCameraInfo = "/camera/color/camera_info";        // CameraInfo
+inline constexpr const char* kImu = "/imu";                                    // Imu
+inline constexpr const char* kGps = "/gps/fix";                                // NavSatFix
+inline constexpr const char* kTfStatic = "/tf_static";                         // TFMessage
+
+}  // namespace littermap::topics
+
+namespace littermap::frames {
+
+inline constexpr const char* kOdom = "odom";
+inline constexpr const char* kBase = "base_link";
+inline constexpr const char* kLaser = "laser";
+inline constexpr const char* kCamera = "camera_color_optical_frame";
+
+}  // namespace littermap::frames

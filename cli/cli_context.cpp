@@ -1,0 +1,19 @@
+#include "cli/cli_context.hpp"
+
+#include <cstdio>
+
+namespace littermap::cli {
+
+ProgressCallback CliContext::Progress() {
+  if (quiet) return {};
+  return [this](const littermap::Progress& progress) { display_.Update(progress); };
+}
+
+void CliContext::Warn(const std::string& message) const {
+  if (quiet) return;
+  std::fprintf(stderr, "warning: %s\n", message.c_str());
+}
+
+void CliContext::FinishProgress() { display_.Finish(); }
+
+}  // namespace littermap::cli

@@ -1,0 +1,33 @@
+#pragma once
+// State shared by the littermap subcommands: global flags, the chosen command, and the way
+// progress and warnings reach the user (stderr; results go to files and stdout).
+
+#include <functional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/progress_display.hpp"
+#include "core/progress.hpp"
+
+namespace littermap::cli {
+
+class CliContext {
+ public:
+  bool quiet = false;
+  std::function<void()> run;  // set by the callback of the subcommand that was given
+
+  ProgressCallback Progress();
+  void Warn(const std::string& message) const;
+  void FinishProgress();
+
+ private:
+  ProgressDisplay display_;
+};
+
+// Each file cmd_*.cpp adds its subcommand(s) to the app.
+void RegisterInfoCommand(CLI::App& app, CliContext& context);
+void RegisterImportCommands(CLI::App& app, CliContext& context);
+void RegisterPendingCommands(CLI::App& app, CliContext& context);
+
+}  // namespace littermap::cli

@@ -1,0 +1,5 @@
+#include "cli/cli_context.hpp"
+
+namespace littermap::cli {
+void RegisterImportCommands(CLI::App&, CliContext&) {}
+}  // namespace littermap::cli

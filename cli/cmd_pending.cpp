@@ -1,0 +1,50 @@
+// Subcommands whose stage is not built yet: they are listed in --help with their contract from
+// DESIGN.md and exit 1 with a message saying so, so scripts fail loudly rather than silently.
+
+#include <string>
+#include <vector>
+
+#include "cli/cli_context.hpp"
+#include "core/error.hpp"
+
+namespace littermap::cli {
+namespace {
+
+struct PendingCommand {
+  const char* name;
+  const char* summary;
+};
+
+const std::vector<PendingCommand>& Pending() {
+  static const std::vector<PendingCommand> commands = {
+      {"simulate", "Simulate a survey run in a procedural park (not available yet)"},
+      {"capture", "Record a run from the robot's sensors (not available yet)"},
+      {"reconstruct", "Reconstruct trajectory and occupancy map from a bag (not available yet)"},
+      {"detect", "Detect and classify litter in a run's RGB-D frames (not available yet)"},
+      {"train", "Train the litter classifier from labelled samples (not available yet)"},
+      {"site", "Create and manage site databases (not available yet)"},
+      {"ingest", "Add a reconstructed run to a site database (not available yet)"},
+      {"heatmap", "Litter density maps of a site (not available yet)"},
+      {"report", "HTML report of a site for park staff (not available yet)"},
+      {"survey", "reconstruct, detect, ingest, heatmap and report in one go (not available yet)"},
+      {"eval", "Evaluate trajectories and detections against ground truth (not available yet)"},
+  };
+  return commands;
+}
+
+}  // namespace
+
+void RegisterPendingCommands(CLI::App& app, CliContext& context) {
+  for (const auto& command : Pending()) {
+    CLI::App* sub = app.add_subcommand(command.name, command.summary);
+    sub->allow_extras();
+    const std::string name = command.name;
+    sub->callback([&context, name] {
+      context.run = [name] {
+        throw UsageError("'littermap " + name + "' is not available in this version yet");
+      };
+    });
+  }
+}
+
+}  // namespace littermap::cli

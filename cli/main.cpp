@@ -1,0 +1,57 @@
+// littermap: one executable, one subcommand per stage (DESIGN.md, "The command line").
+// Exit codes: 0 success, 1 usage error, 2 bad input data, 3 internal error.
+
+#include <cstdio>
+#include <exception>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/cli_context.hpp"
+#include "core/error.hpp"
+#include "littermap_version.hpp"
+
+namespace {
+
+constexpr int kExitUsage = 1;
+constexpr int kExitInternal = 3;
+
+int Fail(littermap::cli::CliContext& context, int code, const char* what) {
+  context.FinishProgress();
+  std::fprintf(stderr, "littermap: error: %s\n", what);
+  return code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using littermap::cli::CliContext;
+  CLI::App app{"littermap: litter distribution maps from a park robot's sensor logs"};
+  app.set_version_flag("--version", "littermap " LITTERMAP_VERSION);
+  app.require_subcommand(1);
+  app.fallthrough();
+
+  CliContext context;
+  app.add_flag("-q,--quiet", context.quiet, "No progress output on stderr");
+  littermap::cli::RegisterInfoCommand(app, context);
+  littermap::cli::RegisterImportCommands(app, context);
+  littermap::cli::RegisterPendingCommands(app, context);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);  // prints help, version or the usage error
+    return code == 0 ? 0 : kExitUsage;
+  }
+
+  try {
+    if (context.run) context.run();
+    context.FinishProgress();
+    return 0;
+  } catch (const littermap::Error& e) {
+    return Fail(context, static_cast<int>(e.kind()), e.what());
+  } catch (const std::bad_alloc&) {
+    return Fail(context, kExitInternal, "out of memory");
+  } catch (const std::exception& e) {
+    return Fail(context, kExitInternal, e.what());
+  }
+}

@@ -1,0 +1,64 @@
+#include "cli/progress_display.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+
+namespace littermap::cli {
+namespace {
+
+constexpr auto kTerminalRedraw = std::chrono::milliseconds(100);
+constexpr auto kLogInterval = std::chrono::seconds(5);
+constexpr int kBarWidth = 30;
+
+std::string Percent(const Progress& progress) {
+  if (progress.total == 0) return std::to_string(progress.done);
+  const double fraction = static_cast<double>(progress.done) / static_cast<double>(progress.total);
+  char text[64];
+  std::snprintf(text, sizeof(text), "%5.1f%% (%llu/%llu)", 100.0 * fraction,
+                static_cast<unsigned long long>(progress.done),
+                static_cast<unsigned long long>(progress.total));
+  return text;
+}
+
+}  // namespace
+
+ProgressDisplay::ProgressDisplay() : terminal_(isatty(STDERR_FILENO) == 1) {}
+
+void ProgressDisplay::Update(const Progress& progress) {
+  const auto now = std::chrono::steady_clock::now();
+  const bool new_task = progress.task != last_task_;
+  const bool finished = progress.total != 0 && progress.done >= progress.total;
+  const auto interval = terminal_ ? kTerminalRedraw : kLogInterval;
+  if (!new_task && !finished && now - last_draw_ < interval) return;
+  if (new_task && bar_open_) Finish();
+  last_task_ = std::string(progress.task);
+  last_draw_ = now;
+
+  if (!terminal_) {
+    std::fprintf(stderr, "%s: %s\n", last_task_.c_str(), Percent(progress).c_str());
+    return;
+  }
+  std::string bar;
+  if (progress.total != 0) {
+    const auto filled = std::min<std::uint64_t>(kBarWidth * progress.done / progress.total,
+                                                kBarWidth);
+    bar.assign(kBarWidth + 3, ' ');
+    bar.front() = '[';
+    bar[kBarWidth + 1] = ']';
+    std::fill_n(bar.begin() + 1, filled, '#');
+  }
+  std::fprintf(stderr, "\r\033[K%s: %s%s", last_task_.c_str(), bar.c_str(),
+               Percent(progress).c_str());
+  std::fflush(stderr);
+  bar_open_ = true;
+}
+
+void ProgressDisplay::Finish() {
+  if (bar_open_) std::fputc('\n', stderr);
+  bar_open_ = false;
+  last_task_.clear();
+}
+
+}  // namespace littermap::cli

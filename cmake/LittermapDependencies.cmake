@@ -1,0 +1,21 @@
+# Every third-party library littermap uses, found once, as imported targets.
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs)
+find_package(SQLite3 REQUIRED)
+find_package(ZLIB REQUIRED)
+find_package(yaml-cpp REQUIRED)
+find_package(nlohmann_json 3 REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(Threads REQUIRED)
+if(LITTERMAP_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()
+if(LITTERMAP_BUILD_BENCH)
+  find_package(benchmark REQUIRED)
+endif()
+
+# yaml-cpp 0.7 in Debian 12 exports the plain target name.
+if(NOT TARGET yaml-cpp::yaml-cpp)
+  add_library(yaml-cpp::yaml-cpp INTERFACE IMPORTED)
+  target_link_libraries(yaml-cpp::yaml-cpp INTERFACE yaml-cpp)
+endif()

@@ -1,0 +1,28 @@
+# littermap_module(NAME [PUBLIC deps...] [PRIVATE deps...])
+# One library per module folder: every .cpp of the folder, headers included as "NAME/x.hpp".
+function(littermap_warnings target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
+                                           -Wno-sign-conversion -Wnon-virtual-dtor)
+  if(LITTERMAP_WERROR)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
+endfunction()
+
+function(littermap_module name)
+  cmake_parse_arguments(ARG "" "" "PUBLIC;PRIVATE" ${ARGN})
+  file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
+  if(NOT sources)  # a header-only module
+    add_library(littermap_${name} INTERFACE)
+    target_include_directories(littermap_${name} INTERFACE ${PROJECT_SOURCE_DIR}
+                                                           ${PROJECT_BINARY_DIR}/generated)
+    target_link_libraries(littermap_${name} INTERFACE ${ARG_PUBLIC})
+    add_library(littermap::${name} ALIAS littermap_${name})
+    return()
+  endif()
+  add_library(littermap_${name} STATIC ${sources})
+  target_include_directories(littermap_${name} PUBLIC ${PROJECT_SOURCE_DIR}
+                                                      ${PROJECT_BINARY_DIR}/generated)
+  target_link_libraries(littermap_${name} PUBLIC ${ARG_PUBLIC} PRIVATE ${ARG_PRIVATE})
+  littermap_warnings(littermap_${name})
+  add_library(littermap::${name} ALIAS littermap_${name})
+endfunction()

@@ -1,0 +1,41 @@
+#pragma once
+// The error type of every littermap library. Libraries never print or exit: they throw one of
+// these with a message that names the file, field, line, topic or frame at fault, and the CLI
+// maps the kind to an exit code (DESIGN.md: 1 usage, 2 bad input data, 3 internal).
+
+#include <stdexcept>
+#include <string>
+
+namespace littermap {
+
+enum class ErrorKind {
+  kUsage = 1,     // the caller asked for something impossible (bad option, missing argument)
+  kBadInput = 2,  // a file or message is malformed; the message says which and where
+  kInternal = 3,  // a bug or an environment failure (disk full, library error)
+};
+
+class Error : public std::runtime_error {
+ public:
+  Error(ErrorKind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
+  ErrorKind kind() const { return kind_; }
+
+ private:
+  ErrorKind kind_;
+};
+
+class UsageError : public Error {
+ public:
+  explicit UsageError(const std::string& message) : Error(ErrorKind::kUsage, message) {}
+};
+
+class BadInputError : public Error {
+ public:
+  explicit BadInputError(const std::string& message) : Error(ErrorKind::kBadInput, message) {}
+};
+
+class InternalError : public Error {
+ public:
+  explicit InternalError(const std::string& message) : Error(ErrorKind::kInternal, message) {}
+};
+
+}  // namespace littermap
