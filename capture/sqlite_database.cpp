@@ -1,0 +1,145 @@
+#include "capture/sqlite_database.hpp"
+
+#include <sqlite3.h>
+
+#include <limits>
+
+namespace littermap {
+namespace {
+
+constexpr int kBusyTimeoutMs = 5000;
+
+}  // namespace
+
+SqliteStatement::SqliteStatement(sqlite3* db, std::string_view sql,
+                                 const std::filesystem::path& file)
+    : db_(db), file_(file) {
+  const int code = sqlite3_prepare_v2(db_, sql.data(), static_cast<int>(sql.size()), &statement_,
+                                      nullptr);
+  if (code != SQLITE_OK) Fail(code, "preparing a query");
+}
+
+SqliteStatement::SqliteStatement(SqliteStatement&& other) noexcept
+    : db_(other.db_), statement_(other.statement_), file_(std::move(other.file_)) {
+  other.statement_ = nullptr;
+}
+
+SqliteStatement::~SqliteStatement() { sqlite3_finalize(statement_); }
+
+void SqliteStatement::Bind(int index, std::int64_t value) {
+  const int code = sqlite3_bind_int64(statement_, index, value);
+  if (code != SQLITE_OK) Fail(code, "binding an integer");
+}
+
+void SqliteStatement::Bind(int index, std::string_view text) {
+  const int code = sqlite3_bind_text64(statement_, index, text.data(), text.size(),
+                                       SQLITE_TRANSIENT, SQLITE_UTF8);
+  if (code != SQLITE_OK) Fail(code, "binding text");
+}
+
+void SqliteStatement::BindBlob(int index, std::span<const std::uint8_t> blob) {
+  // SQLITE_STATIC: the caller keeps the bytes alive until Step(), which saves a copy per message.
+  // A null pointer would bind SQL NULL; an empty message is a zero-length blob.
+  static const std::uint8_t kEmpty = 0;
+  const void* data = blob.empty() ? &kEmpty : blob.data();
+  const int code = sqlite3_bind_blob64(statement_, index, data, blob.size(), SQLITE_STATIC);
+  if (code != SQLITE_OK) Fail(code, "binding a blob");
+}
+
+bool SqliteStatement::Step() {
+  const int code = sqlite3_step(statement_);
+  if (code == SQLITE_ROW) return true;
+  if (code == SQLITE_DONE) return false;
+  Fail(code, "running a query");
+}
+
+void SqliteStatement::Run() {
+  Step();
+  Reset();
+}
+
+void SqliteStatement::Reset() {
+  sqlite3_reset(statement_);
+  sqlite3_clear_bindings(statement_);
+}
+
+std::int64_t SqliteStatement::ColumnInt64(int column) const {
+  return sqlite3_column_int64(statement_, column);
+}
+
+std::string SqliteStatement::ColumnText(int column) const {
+  const auto* text = sqlite3_column_text(statement_, column);
+  if (text == nullptr) return {};
+  const auto size = static_cast<std::size_t>(sqlite3_column_bytes(statement_, column));
+  return std::string(reinterpret_cast<const char*>(text), size);
+}
+
+std::span<const std::uint8_t> SqliteStatement::ColumnBlob(int column) const {
+  const void* blob = sqlite3_column_blob(statement_, column);
+  const auto size = static_cast<std::size_t>(sqlite3_column_bytes(statement_, column));
+  if (blob == nullptr) return {};
+  return {static_cast<const std::uint8_t*>(blob), size};
+}
+
+void SqliteStatement::Fail(int code, const char* action) const {
+  throw SqliteError(file_.string() + ": SQLite error " + action + ": " + sqlite3_errmsg(db_), code);
+}
+
+SqliteDatabase::SqliteDatabase(const std::filesystem::path& file, Mode mode) : file_(file) {
+  int flags = SQLITE_OPEN_NOMUTEX;
+  switch (mode) {
+    case Mode::kReadOnly:
+      flags |= SQLITE_OPEN_READONLY;
+      break;
+    case Mode::kReadWrite:
+      flags |= SQLITE_OPEN_READWRITE;
+      break;
+    case Mode::kCreate:
+      flags |= SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
+      break;
+  }
+  const int code = sqlite3_open_v2(file.c_str(), &db_, flags, nullptr);
+  if (code != SQLITE_OK) {
+    const std::string message = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(code);
+    sqlite3_close(db_);
+    db_ = nullptr;
+    throw SqliteError(file.string() + ": cannot open database: " + message, code);
+  }
+  sqlite3_extended_result_codes(db_, 0);
+  sqlite3_busy_timeout(db_, kBusyTimeoutMs);
+}
+
+SqliteDatabase::~SqliteDatabase() { sqlite3_close(db_); }
+
+void SqliteDatabase::Execute(std::string_view sql) {
+  char* error = nullptr;
+  const std::string statement(sql);
+  const int code = sqlite3_exec(db_, statement.c_str(), nullptr, nullptr, &error);
+  if (code != SQLITE_OK) {
+    const std::string message = error ? error : sqlite3_errstr(code);
+    sqlite3_free(error);
+    throw SqliteError(file_.string() + ": SQLite error: " + message, code);
+  }
+}
+
+SqliteStatement SqliteDatabase::Prepare(std::string_view sql) const {
+  return SqliteStatement(db_, sql, file_);
+}
+
+std::int64_t SqliteDatabase::LastInsertId() const { return sqlite3_last_insert_rowid(db_); }
+
+bool SqliteDatabase::HasTable(std::string_view table) const {
+  SqliteStatement query(db_, "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = ?",
+                        file_);
+  query.Bind(1, table);
+  return query.Step();
+}
+
+bool SqliteDatabase::HasColumn(std::string_view table, std::string_view column) const {
+  SqliteStatement query(db_, "SELECT 1 FROM pragma_table_info(?) WHERE name = ?", file_);
+  query.Bind(1, table);
+  query.Bind(2, column);
+  return query.Step();
+}
+
+}  // namespace littermap

@@ -1,0 +1,80 @@
+#pragma once
+// A thin RAII layer over the SQLite C API for the run bag: one connection, prepared statements,
+// and errors that name the database file. SQLite failures throw SqliteError (an InternalError);
+// callers that know the file came from the user turn them into BadInputError.
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "core/error.hpp"
+
+struct sqlite3;
+struct sqlite3_stmt;
+
+namespace littermap {
+
+class SqliteError : public InternalError {
+ public:
+  SqliteError(const std::string& message, int code) : InternalError(message), code_(code) {}
+  int code() const { return code_; }
+
+ private:
+  int code_;
+};
+
+class SqliteStatement {
+ public:
+  SqliteStatement(sqlite3* db, std::string_view sql, const std::filesystem::path& file);
+  ~SqliteStatement();
+  SqliteStatement(const SqliteStatement&) = delete;
+  SqliteStatement& operator=(const SqliteStatement&) = delete;
+  SqliteStatement(SqliteStatement&& other) noexcept;
+  SqliteStatement& operator=(SqliteStatement&&) = delete;
+
+  // Parameters are 1-based, as in SQLite.
+  void Bind(int index, std::int64_t value);
+  void Bind(int index, std::string_view text);
+  void BindBlob(int index, std::span<const std::uint8_t> blob);
+
+  // Steps once: true when a row is available, false when done. Throws SqliteError on failure.
+  bool Step();
+  // Steps a statement that returns no rows, then resets it for reuse.
+  void Run();
+  void Reset();
+
+  std::int64_t ColumnInt64(int column) const;
+  std::string ColumnText(int column) const;
+  std::span<const std::uint8_t> ColumnBlob(int column) const;  // valid until the next Step
+
+ private:
+  [[noreturn]] void Fail(int code, const char* action) const;
+
+  sqlite3* db_;
+  sqlite3_stmt* statement_ = nullptr;
+  std::filesystem::path file_;
+};
+
+class SqliteDatabase {
+ public:
+  enum class Mode { kReadOnly, kReadWrite, kCreate };
+  SqliteDatabase(const std::filesystem::path& file, Mode mode);
+  ~SqliteDatabase();
+  SqliteDatabase(const SqliteDatabase&) = delete;
+  SqliteDatabase& operator=(const SqliteDatabase&) = delete;
+
+  void Execute(std::string_view sql);
+  SqliteStatement Prepare(std::string_view sql) const;
+  std::int64_t LastInsertId() const;
+  bool HasTable(std::string_view table) const;
+  bool HasColumn(std::string_view table, std::string_view column) const;
+  const std::filesystem::path& file() const { return file_; }
+
+ private:
+  sqlite3* db_ = nullptr;
+  std::filesystem::path file_;
+};
+
+}  // namespace littermap
