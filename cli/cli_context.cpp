@@ -4,6 +4,13 @@
 
 namespace littermap::cli {
 
+CLI::App* CliContext::AddCommand(CLI::App& parent, const std::string& name,
+                                 const std::string& description) {
+  CLI::App* command = parent.add_subcommand(name, description);
+  command->add_flag("-q,--quiet", quiet, "No progress output on stderr");
+  return command;
+}
+
 ProgressCallback CliContext::Progress() {
   if (quiet) return {};
   return [this](const littermap::Progress& progress) { display_.Update(progress); };

@@ -17,6 +17,9 @@ class CliContext {
   bool quiet = false;
   std::function<void()> run;  // set by the callback of the subcommand that was given
 
+  // Adds a subcommand that also accepts the global flags (--quiet) after its name.
+  CLI::App* AddCommand(CLI::App& parent, const std::string& name, const std::string& description);
+
   ProgressCallback Progress();
   void Warn(const std::string& message) const;
   void FinishProgress();

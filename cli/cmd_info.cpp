@@ -130,7 +130,7 @@ void RunInfo(const InfoArguments& arguments, CliContext& context) {
 
 void RegisterInfoCommand(CLI::App& app, CliContext& context) {
   auto arguments = std::make_shared<InfoArguments>();
-  CLI::App* info = app.add_subcommand("info", "Show the topics, counts and duration of a run bag");
+  CLI::App* info = context.AddCommand(app, "info", "Show the topics, counts and duration of a run bag");
   info->add_option("BAG", arguments->bag, "Bag directory (or one .db3 file)")->required();
   info->add_flag("--json", arguments->json, "Machine-readable output with stable keys");
   info->add_flag("--reindex", arguments->reindex,

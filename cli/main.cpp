@@ -28,7 +28,6 @@ int main(int argc, char** argv) {
   CLI::App app{"littermap: litter distribution maps from a park robot's sensor logs"};
   app.set_version_flag("--version", "littermap " LITTERMAP_VERSION);
   app.require_subcommand(1);
-  app.fallthrough();
 
   CliContext context;
   app.add_flag("-q,--quiet", context.quiet, "No progress output on stderr");

@@ -1,0 +1,51 @@
+# littermap: the two commands of the quick start, and a few more.
+#   make demo    install missing packages, build, run the pipeline on the sample
+#   make test    install missing packages, build, run the whole test suite
+#   make bench   build and run the benchmarks (pinned to one core)
+#   make sanitize-test   unit tests again under AddressSanitizer + UndefinedBehaviorSanitizer
+#   make fuzz    build the libFuzzer targets with clang and run each for FUZZ_SECONDS
+
+BUILD_DIR ?= build
+SANITIZE_DIR ?= build-sanitize
+FUZZ_DIR ?= build-fuzz
+FUZZ_SECONDS ?= 30
+JOBS ?= $(shell nproc)
+DEMO_OUT ?= out/demo
+CMAKE_FLAGS ?=
+
+.PHONY: all deps build demo test bench sanitize-test fuzz clean
+
+all: build
+
+deps:
+	@scripts/install-deps.sh
+
+build: deps
+	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS) >/dev/null
+	@cmake --build $(BUILD_DIR) -j $(JOBS)
+
+demo: build
+	@scripts/demo.sh $(BUILD_DIR)/cli/littermap $(DEMO_OUT)
+
+test: build
+	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+bench: build
+	@scripts/bench.sh $(BUILD_DIR)
+
+sanitize-test:
+	@scripts/install-deps.sh --ci
+	@cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=Sanitize -DLITTERMAP_BUILD_BENCH=OFF >/dev/null
+	@cmake --build $(SANITIZE_DIR) -j $(JOBS)
+	@cd $(SANITIZE_DIR) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  ctest --output-on-failure -j $(JOBS)
+
+fuzz:
+	@scripts/install-deps.sh --ci
+	@CC=clang CXX=clang++ cmake -S . -B $(FUZZ_DIR) -DLITTERMAP_BUILD_FUZZ=ON \
+	  -DLITTERMAP_BUILD_TESTS=OFF -DLITTERMAP_BUILD_BENCH=OFF >/dev/null
+	@cmake --build $(FUZZ_DIR) -j $(JOBS)
+	@scripts/fuzz.sh $(FUZZ_DIR) $(FUZZ_SECONDS)
+
+clean:
+	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) $(FUZZ_DIR) out
