@@ -7,6 +7,11 @@ namespace {
 
 constexpr std::uint8_t kEncapsulationCdrLe = 0x01;
 
+std::string Hex(std::uint8_t byte) {
+  constexpr char kDigits[] = "0123456789abcdef";
+  return {'0', 'x', kDigits[byte >> 4], kDigits[byte & 0x0f]};
+}
+
 }  // namespace
 
 Writer::Writer(std::size_t reserve_bytes) {
@@ -43,8 +48,8 @@ Reader::Reader(std::span<const std::uint8_t> data) : data_(data) {
                    " bytes is shorter than the 4-byte encapsulation header");
   }
   if (data_[0] != 0x00 || data_[1] != kEncapsulationCdrLe) {
-    throw CdrError("CDR: unsupported encapsulation 0x" + std::to_string(data_[0]) + "/0x" +
-                   std::to_string(data_[1]) + " (only little-endian plain CDR, 0x00 0x01)");
+    throw CdrError("CDR: unsupported encapsulation " + Hex(data_[0]) + " " + Hex(data_[1]) +
+                   " (only little-endian plain CDR, 0x00 0x01)");
   }
 }
 
@@ -73,8 +78,8 @@ std::string Reader::ReadString(const char* field) {
 
 std::uint32_t Reader::ReadCount(std::size_t min_element_bytes, const char* field) {
   const auto count = Read<std::uint32_t>(field);
-  const std::size_t at_least = static_cast<std::size_t>(count) * min_element_bytes;
-  if (at_least > remaining()) {
+  // Divide rather than multiply: count * min_element_bytes can overflow a 32-bit size_t.
+  if (min_element_bytes != 0 && count > remaining() / min_element_bytes) {
     throw CdrError("CDR: '" + std::string(field) + "' claims " + std::to_string(count) +
                    " elements at byte " + std::to_string(offset_ - 4) + " but only " +
                    std::to_string(remaining()) + " bytes are left");

@@ -16,7 +16,7 @@
 
 namespace littermap {
 
-// MessageTraits<M>::kTypeName is the ROS 2 type name; kDefinition the ros2msg definition with
+// MessageTraits<M>::kTypeName is the ROS 2 type name; Definition() the ros2msg definition with
 // its dependencies appended in rosbag2's "=====\nMSG: pkg/Type\n" layout.
 template <typename M>
 struct MessageTraits;
