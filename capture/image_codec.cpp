@@ -4,6 +4,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "capture/png16.hpp"
 #include "core/error.hpp"
 
 namespace littermap {
@@ -49,9 +50,7 @@ msg::CompressedImage EncodeDepthPng(const cv::Mat& depth_mm, const msg::Header& 
   msg::CompressedImage image;
   image.header = header;
   image.format = "16UC1; png compressed";
-  image.data = EncodeOrThrow(".png", depth_mm,
-                             {cv::IMWRITE_PNG_COMPRESSION, options.png_compression,
-                              cv::IMWRITE_PNG_STRATEGY, cv::IMWRITE_PNG_STRATEGY_RLE});
+  image.data = EncodePng16(depth_mm, {.zlib_level = options.png_compression});
   return image;
 }
 

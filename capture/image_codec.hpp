@@ -15,7 +15,7 @@ namespace littermap {
 
 struct ImageCodecOptions {
   int jpeg_quality = 90;      // 0..100
-  int png_compression = 1;    // 0..9; 1 is fast and within a few % of the best size for depth
+  int png_compression = 1;    // zlib level 0..9; 1 is fast and near the best size for depth
 };
 
 // colour_bgr: CV_8UC3. Throws InternalError if OpenCV cannot encode.

@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
-  libeigen3-dev libopencv-dev libsqlite3-dev zlib1g-dev
+  libeigen3-dev libopencv-dev libsqlite3-dev zlib1g-dev libpng-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libbenchmark-dev
 )

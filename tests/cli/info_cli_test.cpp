@@ -1,0 +1,105 @@
+// `littermap info` and the CLI's contract: exit codes, --version, --help, pending stages.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "capture/bag_writer.hpp"
+#include "support/run_command.hpp"
+#include "support/temp_dir.hpp"
+
+namespace littermap {
+namespace {
+
+using testing::RunLittermap;
+
+void WriteSmallBag(const std::filesystem::path& path) {
+  BagWriter writer(path);
+  writer.AddTopic<msg::String>("/notes", TopicQos::kReliable);
+  for (int i = 0; i < 5; ++i) {
+    writer.WriteMessage("/notes", 2'000'000'000 + i * 500'000'000LL, msg::String{"note"});
+  }
+}
+
+TEST(InfoCli, JsonHasStableKeysAndRightFigures) {
+  testing::TempDir dir;
+  WriteSmallBag(dir / "bag");
+  const auto result = RunLittermap("info --json " + (dir / "bag").string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const auto json = nlohmann::json::parse(result.output);
+  EXPECT_EQ(json.at("message_count"), 5);
+  EXPECT_DOUBLE_EQ(json.at("duration_s").get<double>(), 2.0);
+  EXPECT_EQ(json.at("start_ns"), 2'000'000'000);
+  EXPECT_EQ(json.at("topics").at(0).at("name"), "/notes");
+  EXPECT_EQ(json.at("topics").at(0).at("type"), "std_msgs/msg/String");
+  EXPECT_EQ(json.at("topics").at(0).at("message_count"), 5);
+  EXPECT_EQ(json.at("metadata_rebuilt"), false);
+}
+
+TEST(InfoCli, TextLooksLikeRos2BagInfo) {
+  testing::TempDir dir;
+  WriteSmallBag(dir / "bag");
+  const auto result = RunLittermap("info " + (dir / "bag").string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("Duration:          2.000s"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("Topic: /notes | Type: std_msgs/msg/String | Count: 5"),
+            std::string::npos)
+      << result.output;
+}
+
+TEST(InfoCli, ReindexRestoresMissingMetadata) {
+  testing::TempDir dir;
+  WriteSmallBag(dir / "bag");
+  std::filesystem::remove(dir / "bag" / "metadata.yaml");
+  const auto warned = RunLittermap("info " + (dir / "bag").string());
+  EXPECT_EQ(warned.exit_code, 0);
+  EXPECT_NE(warned.output.find("warning: "), std::string::npos) << warned.output;
+  EXPECT_EQ(RunLittermap("info --reindex " + (dir / "bag").string()).exit_code, 0);
+  EXPECT_TRUE(std::filesystem::exists(dir / "bag" / "metadata.yaml"));
+  const auto quiet = RunLittermap("info " + (dir / "bag").string());
+  EXPECT_EQ(quiet.output.find("warning: "), std::string::npos) << quiet.output;
+}
+
+TEST(InfoCli, BadInputExitsTwoAndNamesTheFile) {
+  testing::TempDir dir;
+  std::filesystem::create_directories(dir / "broken");
+  std::ofstream(dir / "broken" / "broken_0.db3") << std::string(4096, '\x42');
+  const auto result = RunLittermap("info " + (dir / "broken").string());
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("broken_0.db3"), std::string::npos) << result.output;
+
+  const auto missing = RunLittermap("info " + (dir / "missing").string());
+  EXPECT_EQ(missing.exit_code, 2) << missing.output;
+}
+
+TEST(Cli, UsageErrorsExitOne) {
+  EXPECT_EQ(RunLittermap("").exit_code, 1);
+  EXPECT_EQ(RunLittermap("info").exit_code, 1);
+  EXPECT_EQ(RunLittermap("no-such-command").exit_code, 1);
+  EXPECT_EQ(RunLittermap("info --no-such-flag x").exit_code, 1);
+}
+
+TEST(Cli, VersionAndHelpExitZero) {
+  const auto version = RunLittermap("--version");
+  EXPECT_EQ(version.exit_code, 0);
+  EXPECT_NE(version.output.find("littermap "), std::string::npos);
+  for (const char* command : {"", "info ", "reconstruct ", "survey "}) {
+    const auto help = RunLittermap(std::string(command) + "--help");
+    EXPECT_EQ(help.exit_code, 0) << command;
+    EXPECT_NE(help.output.find("Usage:"), std::string::npos) << command;
+  }
+}
+
+TEST(Cli, StagesNotBuiltYetSaySoAndExitOne) {
+  for (const char* command : {"simulate w.yaml -o b --truth t", "reconstruct bag -o run",
+                              "detect bag --run run", "survey bag --site s.gpkg",
+                              "eval trajectory a.tum b.tum"}) {
+    const auto result = RunLittermap(command);
+    EXPECT_EQ(result.exit_code, 1) << command;
+    EXPECT_NE(result.output.find("not available"), std::string::npos) << result.output;
+  }
+}
+
+}  // namespace
+}  // namespace littermap
