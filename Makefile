@@ -12,6 +12,7 @@ FUZZ_SECONDS ?= 30
 JOBS ?= $(shell nproc)
 DEMO_OUT ?= out/demo
 CMAKE_FLAGS ?=
+MAKEFLAGS += --no-print-directory
 
 .PHONY: all deps build demo test bench sanitize-test fuzz clean
 
