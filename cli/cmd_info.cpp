@@ -4,9 +4,11 @@
 #include <ctime>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 #include "capture/bag_reader.hpp"
+#include "capture/message_stream.hpp"
 #include "cli/cli_context.hpp"
 
 namespace littermap::cli {
@@ -16,6 +18,7 @@ struct InfoArguments {
   std::string bag;
   bool json = false;
   bool reindex = false;
+  bool verify = false;
 };
 
 std::uint64_t BagSizeBytes(const BagReader& reader) {
@@ -106,6 +109,22 @@ void PrintText(const BagReader& reader) {
   if (info.topics.empty()) std::printf("\n");
 }
 
+// Decodes every message of a known type; the first one that does not decode is a BadInputError
+// naming topic and index (exit 2). Returns how many messages decoded.
+std::uint64_t VerifyMessages(BagReader& reader, CliContext& context) {
+  MessageStream stream(reader);
+  const ProgressCallback progress = context.Progress();
+  const std::uint64_t total = reader.info().message_count;
+  std::uint64_t decoded = 0;
+  while (stream.Next()) {
+    ++decoded;
+    if (decoded % 256 == 0) ReportProgress(progress, {"verifying", decoded, total});
+  }
+  context.FinishProgress();
+  for (const auto& warning : stream.warnings()) context.Warn(warning);
+  return decoded;
+}
+
 void RunInfo(const InfoArguments& arguments, CliContext& context) {
   BagReader reader(arguments.bag);
   if (reader.metadata_rebuilt()) {
@@ -119,10 +138,18 @@ void RunInfo(const InfoArguments& arguments, CliContext& context) {
     rebuilt.version = BagInfo{}.version;  // written in littermap's (Iron) layout
     WriteMetadataYaml(reader.directory() / "metadata.yaml", rebuilt);
   }
+  std::optional<std::uint64_t> verified;
+  if (arguments.verify) verified = VerifyMessages(reader, context);
   if (arguments.json) {
-    std::cout << InfoJson(reader).dump(2) << "\n";
+    nlohmann::json json = InfoJson(reader);
+    if (verified) json["verified_message_count"] = *verified;
+    std::cout << json.dump(2) << "\n";
   } else {
     PrintText(reader);
+    if (verified) {
+      std::printf("Verified:          %llu messages decode\n",
+                  static_cast<unsigned long long>(*verified));
+    }
   }
 }
 
@@ -135,6 +162,8 @@ void RegisterInfoCommand(CLI::App& app, CliContext& context) {
   info->add_flag("--json", arguments->json, "Machine-readable output with stable keys");
   info->add_flag("--reindex", arguments->reindex,
                  "Rewrite metadata.yaml from the database (after an interrupted recording)");
+  info->add_flag("--verify", arguments->verify,
+                 "Decode every message; a damaged one is an error naming topic and index");
   info->callback([arguments, &context] {
     context.run = [arguments, &context] { RunInfo(*arguments, context); };
   });

@@ -103,3 +103,33 @@ TEST(Cli, StagesNotBuiltYetSaySoAndExitOne) {
 
 }  // namespace
 }  // namespace littermap
+
+namespace littermap {
+namespace {
+
+TEST(InfoCli, VerifyNamesTheDamagedMessageAndExitsTwo) {
+  testing::TempDir dir;
+  {
+    BagWriter writer(dir / "bag");
+    writer.AddTopic<msg::LaserScan>("/scan");
+    writer.AddTopic("/custom", "acme_msgs/msg/Widget", TopicQos::kReliable);
+    msg::LaserScan scan;
+    scan.ranges = {1.f, 2.f};
+    const auto bytes = Encode(scan);
+    writer.Write("/scan", 1, bytes);
+    writer.Write("/custom", 2, bytes);
+    writer.Write("/scan", 3, std::span(bytes).first(bytes.size() - 3));
+  }
+  const auto result = testing::RunLittermap("info --verify " + (dir / "bag").string());
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("'/scan' message #1"), std::string::npos) << result.output;
+
+  testing::TempDir good;
+  WriteSmallBag(good / "bag");
+  const auto ok = testing::RunLittermap("info --verify --json " + (good / "bag").string());
+  ASSERT_EQ(ok.exit_code, 0) << ok.output;
+  EXPECT_EQ(nlohmann::json::parse(ok.output).at("verified_message_count"), 5);
+}
+
+}  // namespace
+}  // namespace littermap
