@@ -31,6 +31,7 @@ class CliContext {
 // Each file cmd_*.cpp adds its subcommand(s) to the app.
 void RegisterInfoCommand(CLI::App& app, CliContext& context);
 void RegisterImportCommands(CLI::App& app, CliContext& context);
+void RegisterSimulateCommand(CLI::App& app, CliContext& context);
 void RegisterPendingCommands(CLI::App& app, CliContext& context);
 
 }  // namespace littermap::cli

@@ -18,7 +18,6 @@ struct PendingCommand {
 
 const std::vector<PendingCommand>& Pending() {
   static const std::vector<PendingCommand> commands = {
-      {"simulate", "Simulate a survey run in a procedural park (not available yet)"},
       {"capture", "Record a run from the robot's sensors (not available yet)"},
       {"reconstruct", "Reconstruct trajectory and occupancy map from a bag (not available yet)"},
       {"detect", "Detect and classify litter in a run's RGB-D frames (not available yet)"},

@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   app.add_flag("-q,--quiet", context.quiet, "No progress output on stderr");
   littermap::cli::RegisterInfoCommand(app, context);
   littermap::cli::RegisterImportCommands(app, context);
+  littermap::cli::RegisterSimulateCommand(app, context);
   littermap::cli::RegisterPendingCommands(app, context);
 
   try {

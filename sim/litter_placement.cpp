@@ -1,0 +1,243 @@
+// Litter and natural look-alikes. Litter follows a clustered (Thomas-like) process: a share
+// hotspot_fraction of the items scatter with a Gaussian around hotspots (benches and bins weigh
+// 3, points along path edges 1), the rest fall uniformly, as litter surveys report accumulation
+// at rest places and path edges. Sizes and colours are those of real items (TACO classes).
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "sim/random.hpp"
+#include "sim/world.hpp"
+
+namespace littermap::sim {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+struct Kind {
+  Shape shape;
+  Eigen::Vector3d size_m;
+  double lying_probability;  // a cylinder or cone on its side
+  std::vector<Eigen::Vector3d> colours;
+  const char* texture;
+  double raised_m = 0;  // flowers sit on a stem
+};
+
+const std::map<std::string, Kind>& Catalog() {
+  static const std::map<std::string, Kind> kinds = {
+      {"can",
+       {Shape::kCylinder,
+        {0.066, 0.066, 0.12},
+        0.7,
+        {{0.8, 0.1, 0.1}, {0.75, 0.75, 0.78}, {0.1, 0.2, 0.7}, {0.1, 0.5, 0.2}},
+        "aluminium"}},
+      {"bottle",
+       {Shape::kCylinder,
+        {0.07, 0.07, 0.25},
+        0.9,
+        {{0.8, 0.85, 0.9}, {0.2, 0.5, 0.3}, {0.4, 0.25, 0.1}},
+        "plastic"}},
+      {"cup",
+       {Shape::kCylinder,
+        {0.08, 0.08, 0.1},
+        0.6,
+        {{0.95, 0.95, 0.95}, {0.55, 0.4, 0.25}},
+        "paper"}},
+      {"carton",
+       {Shape::kBox,
+        {0.2, 0.1, 0.07},
+        0,
+        {{0.9, 0.9, 0.85}, {0.95, 0.8, 0.1}, {0.2, 0.4, 0.8}},
+        "cardboard"}},
+      {"food_container", {Shape::kBox, {0.2, 0.15, 0.06}, 0, {{0.97, 0.97, 0.95}}, "styrofoam"}},
+      {"plastic_bag",
+       {Shape::kBox,
+        {0.3, 0.25, 0.02},
+        0,
+        {{0.95, 0.95, 0.95}, {0.2, 0.3, 0.8}, {0.05, 0.05, 0.05}},
+        "plastic_film"}},
+      {"other",
+       {Shape::kBox, {0.09, 0.055, 0.02}, 0, {{0.85, 0.15, 0.15}, {0.8, 0.65, 0.2}}, "paper"}},
+      {"flower_red",
+       {Shape::kEllipsoid, {0.05, 0.05, 0.03}, 0, {{0.85, 0.1, 0.1}}, "petals", 0.15}},
+      {"flower_yellow",
+       {Shape::kEllipsoid, {0.04, 0.04, 0.03}, 0, {{0.95, 0.85, 0.1}}, "petals", 0.12}},
+      {"flower_white",
+       {Shape::kEllipsoid, {0.035, 0.035, 0.02}, 0, {{0.95, 0.95, 0.9}}, "petals", 0.1}},
+      {"flower_purple",
+       {Shape::kEllipsoid, {0.04, 0.04, 0.04}, 0, {{0.5, 0.2, 0.65}}, "petals", 0.15}},
+      {"leaf",
+       {Shape::kBox,
+        {0.08, 0.06, 0.004},
+        0,
+        {{0.85, 0.45, 0.1}, {0.7, 0.15, 0.05}, {0.5, 0.3, 0.1}, {0.9, 0.75, 0.2}},
+        "leaf"}},
+      {"stone",
+       {Shape::kEllipsoid,
+        {0.08, 0.06, 0.05},
+        0,
+        {{0.55, 0.55, 0.52}, {0.7, 0.68, 0.62}},
+        "stone"}},
+      {"pine_cone", {Shape::kEllipsoid, {0.045, 0.045, 0.08}, 0.9, {{0.4, 0.25, 0.12}}, "cone"}},
+      {"branch", {Shape::kCylinder, {0.03, 0.03, 0.6}, 1.0, {{0.35, 0.25, 0.15}}, "bark"}},
+      {"mushroom",
+       {Shape::kCylinder,
+        {0.06, 0.06, 0.06},
+        0,
+        {{0.95, 0.92, 0.85}, {0.8, 0.1, 0.05}},
+        "mushroom"}},
+  };
+  return kinds;
+}
+
+// Exact counts per class from weights (largest remainder), in the map's key order.
+std::vector<std::string> AllocateLabels(const std::map<std::string, double>& weights, int total) {
+  double sum = 0;
+  for (const auto& [label, weight] : weights) sum += weight;
+  std::vector<std::string> labels;
+  if (sum <= 0 || total <= 0) return labels;
+  std::vector<std::pair<double, std::string>> remainders;
+  for (const auto& [label, weight] : weights) {
+    const double share = total * weight / sum;
+    labels.insert(labels.end(), static_cast<std::size_t>(std::floor(share)), label);
+    remainders.emplace_back(share - std::floor(share), label);
+  }
+  std::stable_sort(remainders.begin(), remainders.end(),
+                   [](const auto& a, const auto& b) { return a.first > b.first; });
+  for (std::size_t i = 0; labels.size() < static_cast<std::size_t>(total); ++i) {
+    labels.push_back(remainders[i].second);
+  }
+  return labels;
+}
+
+bool InsideStructure(const World& world, const Eigen::Vector2d& p) {
+  for (const WorldObject& o : world.objects) {
+    if (o.kind == ObjectKind::kLitter || o.kind == ObjectKind::kNatural ||
+        o.label == "tree_crown") {
+      continue;
+    }
+    const double radius = 0.5 * std::max(o.size_m.x(), o.size_m.y()) + 0.05;
+    if ((p - o.center_m.head<2>()).norm() < radius) return true;
+  }
+  return false;
+}
+
+bool InPark(const World& world, const Eigen::Vector2d& p) {
+  return p.x() > 0.2 && p.y() > 0.2 && p.x() < world.spec.size_x_m - 0.2 &&
+         p.y() < world.spec.size_y_m - 0.2;
+}
+
+// Places one small object of `label` near what `draw` proposes.
+template <typename Draw>
+void PlaceSmall(World& world, Rng& rng, ObjectKind kind, const std::string& label,
+                double hidden_probability, Draw draw) {
+  const Kind& k = Catalog().at(label);
+  Eigen::Vector2d p = draw();
+  for (int i = 0; i < 100 && (!InPark(world, p) || InsideStructure(world, p)); ++i) p = draw();
+  WorldObject o;
+  o.kind = kind;
+  o.label = label;
+  o.shape = k.shape;
+  o.size_m = k.size_m;
+  if (label == "branch") o.size_m.z() = rng.Uniform(0.3, 1.0);
+  if (label == "stone") o.size_m *= rng.Uniform(0.6, 1.6);
+  o.colour_rgb = k.colours[static_cast<std::size_t>(rng.Index(int(k.colours.size())))];
+  o.texture = k.texture;
+  o.orientation.yaw_rad = rng.Uniform(-kPi, kPi);
+  const bool lying = rng.Bernoulli(k.lying_probability);
+  if (lying) o.orientation.pitch_rad = kPi / 2;  // the local z axis lies flat
+  const double height = lying ? o.size_m.x() : o.size_m.z();
+  if (world.terrain.GroundAt(p) == GroundType::kGrass && rng.Bernoulli(hidden_probability)) {
+    o.hidden_fraction = rng.Uniform(0.3, 0.6);
+  }
+  o.center_m = {p.x(), p.y(),
+                world.terrain.HeightAt(p) + k.raised_m + height * (0.5 - o.hidden_fraction)};
+  AddObject(world, o);
+}
+
+std::vector<Eigen::Vector2d> PathEdgePoints(const Terrain& terrain) {
+  std::vector<Eigen::Vector2d> points;
+  for (const PathSpec& path : terrain.paths()) {
+    for (std::size_t i = 0; i + 1 < path.points_m.size(); ++i) {
+      const Eigen::Vector2d a = path.points_m[i], b = path.points_m[i + 1];
+      const Eigen::Vector2d along = (b - a).normalized();
+      const Eigen::Vector2d normal(-along.y(), along.x());
+      for (double s = 2.5; s < (b - a).norm(); s += 5) {
+        points.push_back(a + s * along + normal * 0.5 * path.width_m);
+        points.push_back(a + s * along - normal * 0.5 * path.width_m);
+      }
+    }
+  }
+  return points;
+}
+
+}  // namespace
+
+void PlaceLitter(World& world) {
+  const LitterSpec& spec = world.spec.litter;
+  Rng rng(world.spec.seed, 301);
+  std::vector<Eigen::Vector2d> hotspots = world.hotspots_m;
+  std::vector<double> weights(hotspots.size(), 3.0);
+  for (const Eigen::Vector2d& p : PathEdgePoints(world.terrain)) {
+    hotspots.push_back(p);
+    weights.push_back(1.0);
+  }
+  double total_weight = 0;
+  for (double w : weights) total_weight += w;
+  const auto pick_hotspot = [&] {
+    double u = rng.Uniform(0, total_weight);
+    for (std::size_t i = 0; i < hotspots.size(); ++i) {
+      if ((u -= weights[i]) < 0) return hotspots[i];
+    }
+    return hotspots.back();
+  };
+  for (const std::string& label : AllocateLabels(spec.class_weights, spec.count)) {
+    const bool clustered = !hotspots.empty() && rng.Bernoulli(spec.hotspot_fraction);
+    const Eigen::Vector2d center = clustered ? pick_hotspot() : Eigen::Vector2d::Zero();
+    PlaceSmall(world, rng, ObjectKind::kLitter, label, spec.half_hidden_fraction, [&] {
+      if (clustered) {
+        return Eigen::Vector2d(center.x() + rng.Normal(0, spec.hotspot_sigma_m),
+                               center.y() + rng.Normal(0, spec.hotspot_sigma_m));
+      }
+      return Eigen::Vector2d(rng.Uniform(0, world.spec.size_x_m),
+                             rng.Uniform(0, world.spec.size_y_m));
+    });
+  }
+}
+
+void PlaceNaturalObjects(World& world) {
+  Rng rng(world.spec.seed, 401);
+  std::vector<Eigen::Vector2d> trees;
+  for (const WorldObject& o : world.objects) {
+    if (o.label == "tree_trunk") trees.push_back(o.center_m.head<2>());
+  }
+  // Flowers grow in meadow clumps; leaves, cones, branches and mushrooms lie under trees.
+  std::vector<Eigen::Vector2d> meadows;
+  for (int i = 0; i < 6; ++i) {
+    meadows.emplace_back(rng.Uniform(0, world.spec.size_x_m), rng.Uniform(0, world.spec.size_y_m));
+  }
+  for (const std::string& label :
+       AllocateLabels(world.spec.natural.class_weights, world.spec.natural.count)) {
+    const bool flower = label.rfind("flower", 0) == 0;
+    const bool under_tree = !flower && label != "stone" && !trees.empty();
+    const Eigen::Vector2d center =
+        flower       ? meadows[static_cast<std::size_t>(rng.Index(int(meadows.size())))]
+        : under_tree ? trees[static_cast<std::size_t>(rng.Index(int(trees.size())))]
+                     : Eigen::Vector2d(rng.Uniform(0, world.spec.size_x_m),
+                                       rng.Uniform(0, world.spec.size_y_m));
+    const double sigma = flower ? 1.5 : under_tree ? 2.0 : 0.0;
+    PlaceSmall(world, rng, ObjectKind::kNatural, label, 0.3, [&] {
+      if (sigma == 0) {
+        return Eigen::Vector2d(rng.Uniform(0, world.spec.size_x_m),
+                               rng.Uniform(0, world.spec.size_y_m));
+      }
+      return Eigen::Vector2d(center.x() + rng.Normal(0, sigma), center.y() + rng.Normal(0, sigma));
+    });
+  }
+}
+
+}  // namespace littermap::sim

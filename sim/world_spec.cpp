@@ -1,0 +1,191 @@
+#include "sim/world_spec.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "sim/yaml_fields.hpp"
+
+namespace littermap::sim {
+namespace {
+
+const std::set<std::string> kLitterClasses = {
+    "can", "bottle", "cup", "carton", "food_container", "plastic_bag", "other"};
+const std::set<std::string> kNaturalClasses = {"flower_red",    "flower_yellow", "flower_white",
+                                               "flower_purple", "leaf",          "stone",
+                                               "pine_cone",     "branch",        "mushroom"};
+
+void Check(const YamlFields& fields, const char* key, bool ok, const std::string& what) {
+  if (!ok) fields.Fail(key, what);
+}
+
+void ReadTerrain(YamlFields fields, TerrainSpec& terrain) {
+  fields.Read("hill_amplitude_m", terrain.hill_amplitude_m);
+  fields.Read("hill_wavelength_m", terrain.hill_wavelength_m);
+  fields.Read("roots", terrain.roots);
+  fields.Read("root_height_m", terrain.root_height_m);
+  fields.Read("leaf_patches", terrain.leaf_patches);
+  fields.Read("gravel_patches", terrain.gravel_patches);
+  fields.Read("patch_radius_m", terrain.patch_radius_m);
+  for (YamlFields& path_fields : fields.Children("paths")) {
+    PathSpec path;
+    path_fields.Read("points_m", path.points_m);
+    path_fields.Read("width_m", path.width_m);
+    Check(path_fields, "points_m", path.points_m.size() >= 2, "needs at least two points");
+    path_fields.Finish();
+    terrain.paths.push_back(path);
+  }
+  Check(fields, "hill_wavelength_m", terrain.hill_wavelength_m >= 2, "must be at least 2");
+  fields.Finish();
+}
+
+void ReadStructure(YamlFields fields, StructureSpec& s) {
+  fields.Read("trees", s.trees);
+  fields.Read("rocks", s.rocks);
+  fields.Read("benches", s.benches);
+  fields.Read("bins", s.bins);
+  fields.Read("fence_segments", s.fence_segments);
+  fields.Read("bushes", s.bushes);
+  fields.Read("open_areas", s.open_areas);
+  fields.Read("open_area_radius_m", s.open_area_radius_m);
+  fields.Read("route_clearance_m", s.route_clearance_m);
+  fields.Finish();
+}
+
+void ReadLitter(YamlFields fields, LitterSpec& litter) {
+  fields.Read("count", litter.count);
+  fields.Read("hotspot_fraction", litter.hotspot_fraction);
+  fields.Read("hotspot_sigma_m", litter.hotspot_sigma_m);
+  fields.Read("half_hidden_fraction", litter.half_hidden_fraction);
+  fields.Read("class_weights", litter.class_weights, kLitterClasses);
+  Check(fields, "hotspot_fraction", litter.hotspot_fraction >= 0 && litter.hotspot_fraction <= 1,
+        "must be in [0, 1]");
+  fields.Finish();
+}
+
+void ReadNatural(YamlFields fields, NaturalSpec& natural) {
+  fields.Read("count", natural.count);
+  fields.Read("class_weights", natural.class_weights, kNaturalClasses);
+  fields.Finish();
+}
+
+void ReadMount(YamlFields fields, MountSpec& mount) {
+  fields.Read("x_m", mount.x_m);
+  fields.Read("y_m", mount.y_m);
+  fields.Read("z_m", mount.z_m);
+  fields.Read("roll_deg", mount.roll_deg);
+  fields.Read("pitch_deg", mount.pitch_deg);
+  fields.Read("yaw_deg", mount.yaw_deg);
+  fields.Finish();
+}
+
+void ReadRobot(YamlFields fields, RobotSpec& robot) {
+  YamlFields laser = fields.Child("laser");
+  laser.Read("preset", robot.laser.preset);
+  laser.Read("rate_hz", robot.laser.rate_hz);
+  laser.Read("range_noise_sigma_m", robot.laser.range_noise_sigma_m);
+  laser.Read("mixed_pixel_probability", robot.laser.mixed_pixel_probability);
+  laser.Read("dropout_probability", robot.laser.dropout_probability);
+  ReadMount(laser.Child("mount"), robot.laser.mount);
+  Check(laser, "preset", robot.laser.preset == "urg-04lx" || robot.laser.preset == "utm-30lx",
+        "must be urg-04lx or utm-30lx");
+  Check(laser, "rate_hz", robot.laser.rate_hz >= 1 && robot.laser.rate_hz <= 100,
+        "must be in [1, 100]");
+  laser.Finish();
+  ReadMount(fields.Child("camera_mount"), robot.camera_mount);
+  YamlFields odometry = fields.Child("odometry");
+  odometry.Read("rate_hz", robot.odometry.rate_hz);
+  odometry.Read("scale_error", robot.odometry.scale_error);
+  odometry.Read("yaw_drift_deg_per_m", robot.odometry.yaw_drift_deg_per_m);
+  odometry.Read("translation_noise_m_per_sqrt_m", robot.odometry.translation_noise_m_per_sqrt_m);
+  odometry.Read("rotation_noise_deg_per_sqrt_m", robot.odometry.rotation_noise_deg_per_sqrt_m);
+  Check(odometry, "rate_hz", robot.odometry.rate_hz >= 1 && robot.odometry.rate_hz <= 1000,
+        "must be in [1, 1000]");
+  odometry.Finish();
+  YamlFields imu = fields.Child("imu");
+  imu.Read("rate_hz", robot.imu.rate_hz);
+  imu.Read("tilt_noise_deg", robot.imu.tilt_noise_deg);
+  Check(imu, "rate_hz", robot.imu.rate_hz >= 1 && robot.imu.rate_hz <= 1000,
+        "must be in [1, 1000]");
+  imu.Finish();
+  fields.Read("max_angular_speed_radps", robot.max_angular_speed_radps);
+  fields.Finish();
+}
+
+void ReadRoute(YamlFields fields, RouteSpec& route) {
+  fields.Read("type", route.type);
+  fields.Read("waypoints_m", route.waypoints_m);
+  fields.Read("polygon_m", route.polygon_m);
+  fields.Read("lane_spacing_m", route.lane_spacing_m);
+  fields.Read("speed_mps", route.speed_mps);
+  Check(fields, "type", route.type == "waypoints" || route.type == "lawnmower",
+        "must be waypoints or lawnmower");
+  Check(fields, "speed_mps", route.speed_mps >= 0.05 && route.speed_mps <= 3,
+        "must be in "
+        "[0.05, 3]");
+  if (route.type == "waypoints") {
+    Check(fields, "waypoints_m", route.waypoints_m.size() >= 2, "needs at least two points");
+  } else {
+    Check(fields, "polygon_m", route.polygon_m.size() >= 3, "needs at least three points");
+    Check(fields, "lane_spacing_m", route.lane_spacing_m >= 0.5, "must be at least 0.5");
+  }
+  fields.Finish();
+}
+
+void ReadBumps(YamlFields& fields, std::vector<BumpSpec>& bumps) {
+  for (YamlFields& bump_fields : fields.Children("bumps")) {
+    BumpSpec bump;
+    bump_fields.Read("x_m", bump.x_m);
+    bump_fields.Read("y_m", bump.y_m);
+    bump_fields.Read("radius_m", bump.radius_m);
+    bump_fields.Read("roll_deg", bump.roll_deg);
+    bump_fields.Read("pitch_deg", bump.pitch_deg);
+    Check(bump_fields, "radius_m", bump.radius_m > 0.05, "must be above 0.05");
+    Check(bump_fields, "roll_deg", std::abs(bump.roll_deg) <= 30, "must be within ±30");
+    Check(bump_fields, "pitch_deg", std::abs(bump.pitch_deg) <= 30, "must be within ±30");
+    bump_fields.Finish();
+    bumps.push_back(bump);
+  }
+}
+
+}  // namespace
+
+WorldSpec ParseWorldSpec(const std::string& yaml_text, const std::filesystem::path& source) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::Exception& e) {
+    throw BadInputError(source.string() + ": not valid YAML: " + e.what());
+  }
+  WorldSpec spec;
+  spec.source = source;
+  YamlFields fields(root, source, "");
+  fields.Read("name", spec.name);
+  fields.Read("seed", spec.seed);
+  fields.Read("size_x_m", spec.size_x_m);
+  fields.Read("size_y_m", spec.size_y_m);
+  fields.Read("start_time_s", spec.start_time_s);
+  Check(fields, "size_x_m", spec.size_x_m >= 5 && spec.size_x_m <= 2000, "must be in [5, 2000]");
+  Check(fields, "size_y_m", spec.size_y_m >= 5 && spec.size_y_m <= 2000, "must be in [5, 2000]");
+  Check(fields, "start_time_s", spec.start_time_s >= 0 && spec.start_time_s < 2e9,
+        "must be in [0, 2e9)");
+  ReadTerrain(fields.Child("terrain"), spec.terrain);
+  ReadStructure(fields.Child("structure"), spec.structure);
+  ReadLitter(fields.Child("litter"), spec.litter);
+  ReadNatural(fields.Child("natural"), spec.natural);
+  ReadRobot(fields.Child("robot"), spec.robot);
+  ReadRoute(fields.Child("route"), spec.route);
+  ReadBumps(fields, spec.bumps);
+  fields.Finish();
+  return spec;
+}
+
+WorldSpec LoadWorldSpec(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw BadInputError(path.string() + ": cannot open world file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return ParseWorldSpec(text.str(), path);
+}
+
+}  // namespace littermap::sim

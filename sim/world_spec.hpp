@@ -1,0 +1,136 @@
+#pragma once
+// The description of a simulated park (samples/worlds/*.yaml) as plain option structs. The
+// YAML gives sizes and counts; the world itself is generated from the seed (sim/world.hpp).
+// Every key is optional (the defaults below) and an unknown key is an error naming the file and
+// the key, so a typo never silently falls back to a default.
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace littermap::sim {
+
+struct PathSpec {  // a dirt path: a polyline with a width
+  std::vector<Eigen::Vector2d> points_m;
+  double width_m = 1.5;
+};
+
+struct TerrainSpec {
+  double hill_amplitude_m = 0.3;  // gentle slopes: sum of a few long sinusoids
+  double hill_wavelength_m = 20;  // shortest wavelength of the hills
+  int roots = 20;                 // small bumps (roots) of a few cm
+  double root_height_m = 0.04;
+  std::vector<PathSpec> paths;
+  int leaf_patches = 6;    // leaf-litter ground regions
+  int gravel_patches = 3;  // gravel ground regions
+  double patch_radius_m = 3;
+};
+
+struct StructureSpec {
+  int trees = 30;
+  int rocks = 10;
+  int benches = 4;
+  int bins = 3;
+  int fence_segments = 4;  // fences and walls along the border
+  int bushes = 10;
+  int open_areas = 2;  // disks without any structure (few laser features)
+  double open_area_radius_m = 6;
+  double route_clearance_m = 1.0;  // free corridor half-width around the route
+};
+
+struct LitterSpec {
+  int count = 60;
+  double hotspot_fraction = 0.75;  // share placed around benches, bins and path edges
+  double hotspot_sigma_m = 1.2;    // spread around a hotspot
+  double half_hidden_fraction = 0.2;
+  // TACO-aligned classes; weights are normalised. Keys: can, bottle, cup, carton,
+  // food_container, plastic_bag, other.
+  std::map<std::string, double> class_weights = {
+      {"can", 0.15},           {"bottle", 0.2},       {"cup", 0.15},  {"carton", 0.1},
+      {"food_container", 0.1}, {"plastic_bag", 0.15}, {"other", 0.15}};
+};
+
+struct NaturalSpec {
+  int count = 80;
+  // Keys: flower_red, flower_yellow, flower_white, flower_purple, leaf, stone, pine_cone,
+  // branch, mushroom.
+  std::map<std::string, double> class_weights = {
+      {"flower_red", 0.08},    {"flower_yellow", 0.1}, {"flower_white", 0.1},
+      {"flower_purple", 0.07}, {"leaf", 0.25},         {"stone", 0.15},
+      {"pine_cone", 0.1},      {"branch", 0.1},        {"mushroom", 0.05}};
+};
+
+struct MountSpec {  // a sensor's pose on base_link; rpy as in REP 103
+  double x_m = 0, y_m = 0, z_m = 0;
+  double roll_deg = 0, pitch_deg = 0, yaw_deg = 0;
+};
+
+struct LaserSpec {
+  std::string preset = "urg-04lx";  // urg-04lx | utm-30lx
+  double rate_hz = 10;              // 10..40
+  double range_noise_sigma_m = 0.01;
+  double mixed_pixel_probability = 0.5;  // at a range edge, chance the beam averages both sides
+  double dropout_probability = 0.002;    // spurious no-echo beams
+  MountSpec mount{0.15, 0, 0.3, 0, 0, 0};
+};
+
+struct OdometrySpec {  // wheel odometry errors (sim/odometry_model.hpp)
+  double rate_hz = 50;
+  double scale_error = 0.01;          // systematic distance error (wheel radius)
+  double yaw_drift_deg_per_m = 0.15;  // systematic heading drift (track width)
+  double translation_noise_m_per_sqrt_m = 0.01;
+  double rotation_noise_deg_per_sqrt_m = 0.2;
+};
+
+struct ImuSpec {
+  double rate_hz = 50;
+  double tilt_noise_deg = 0.3;  // σ of roll and pitch
+};
+
+struct RobotSpec {
+  LaserSpec laser;
+  MountSpec camera_mount{0.2, 0, 0.45, 0, 20, 0};  // camera body (x forward), pitched down
+  OdometrySpec odometry;
+  ImuSpec imu;
+  double max_angular_speed_radps = 1.0;
+};
+
+struct RouteSpec {
+  std::string type = "waypoints";  // waypoints | lawnmower
+  std::vector<Eigen::Vector2d> waypoints_m;
+  std::vector<Eigen::Vector2d> polygon_m;  // lawnmower: area to cover
+  double lane_spacing_m = 4;
+  double speed_mps = 0.6;  // 0.3..1.0
+};
+
+struct BumpSpec {  // a root or bump on the route that tilts the robot
+  double x_m = 0, y_m = 0;
+  double radius_m = 0.5;
+  double roll_deg = 0, pitch_deg = 0;
+};
+
+struct WorldSpec {
+  std::filesystem::path source;  // the YAML file, for messages
+  std::string name = "park";
+  std::uint64_t seed = 1;
+  double size_x_m = 40, size_y_m = 30;
+  double start_time_s = 1.7e9;  // stamp of the first message
+  TerrainSpec terrain;
+  StructureSpec structure;
+  LitterSpec litter;
+  NaturalSpec natural;
+  RobotSpec robot;
+  RouteSpec route;
+  std::vector<BumpSpec> bumps;
+};
+
+// Throws BadInputError naming the file and key on a malformed or unknown key, or an invalid
+// value (e.g. "park.yaml: robot.laser.rate_hz: must be in [1, 100]").
+WorldSpec LoadWorldSpec(const std::filesystem::path& path);
+WorldSpec ParseWorldSpec(const std::string& yaml_text, const std::filesystem::path& source = {});
+
+}  // namespace littermap::sim

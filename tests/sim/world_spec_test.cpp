@@ -1,0 +1,59 @@
+// World files: the samples load; unknown keys and bad values name the file and the key.
+
+#include <gtest/gtest.h>
+
+#include "core/error.hpp"
+#include "sim/world_spec.hpp"
+#include "sim_test_support.hpp"
+
+namespace littermap::sim {
+namespace {
+
+using testing::SampleWorld;
+
+constexpr const char* kRoute = "route: {waypoints_m: [[0, 0], [5, 0]]}\n";
+
+std::string ErrorOf(const std::string& yaml) {
+  try {
+    ParseWorldSpec(yaml, "w.yaml");
+  } catch (const BadInputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(WorldSpec, SamplesLoad) {
+  const WorldSpec small = LoadWorldSpec(SampleWorld("park_small.yaml"));
+  EXPECT_EQ(small.name, "park_small");
+  EXPECT_EQ(small.litter.count, 60);
+  EXPECT_EQ(small.bumps.size(), 2u);
+  EXPECT_EQ(small.robot.laser.preset, "urg-04lx");
+  const WorldSpec large = LoadWorldSpec(SampleWorld("park_large.yaml"));
+  EXPECT_EQ(large.route.type, "lawnmower");
+  EXPECT_EQ(large.robot.laser.preset, "utm-30lx");
+  EXPECT_DOUBLE_EQ(large.size_x_m, 150);
+}
+
+TEST(WorldSpec, UnknownKeysNameFileAndKey) {
+  EXPECT_EQ(ErrorOf(std::string(kRoute) + "sise_x_m: 3\n"), "w.yaml: sise_x_m: unknown key");
+  EXPECT_EQ(ErrorOf(std::string(kRoute) + "robot: {laser: {rate: 10}}\n"),
+            "w.yaml: robot.laser.rate: unknown key");
+  EXPECT_EQ(ErrorOf(std::string(kRoute) + "litter: {class_weights: {tyre: 1}}\n"),
+            "w.yaml: litter.class_weights.tyre: unknown class");
+  EXPECT_EQ(ErrorOf(std::string(kRoute) + "bumps: [{x_m: 1, height_m: 2}]\n"),
+            "w.yaml: bumps[0].height_m: unknown key");
+}
+
+TEST(WorldSpec, BadValuesNameTheKey) {
+  EXPECT_EQ(ErrorOf(std::string(kRoute) + "size_x_m: wide\n"),
+            "w.yaml: size_x_m: expected a number");
+  EXPECT_EQ(ErrorOf(std::string(kRoute) + "robot: {laser: {preset: lms100}}\n"),
+            "w.yaml: robot.laser.preset: must be urg-04lx or utm-30lx");
+  EXPECT_EQ(ErrorOf("route: {waypoints_m: [[0, 0]]}\n"),
+            "w.yaml: route.waypoints_m: needs at least two points");
+  EXPECT_NE(ErrorOf("[1, 2"), "no error");
+  EXPECT_EQ(ErrorOf(kRoute), "no error");
+}
+
+}  // namespace
+}  // namespace littermap::sim

@@ -1,0 +1,118 @@
+// The generated park: determinism, counts and class mix, clustered litter, a clear route.
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "sim/terrain.hpp"
+#include "sim/world.hpp"
+#include "sim_test_support.hpp"
+
+namespace littermap::sim {
+namespace {
+
+using testing::SampleWorld;
+
+bool SameObjects(const World& a, const World& b) {
+  if (a.objects.size() != b.objects.size()) return false;
+  for (std::size_t i = 0; i < a.objects.size(); ++i) {
+    const WorldObject &x = a.objects[i], &y = b.objects[i];
+    if (x.label != y.label || x.center_m != y.center_m || x.size_m != y.size_m ||
+        x.colour_rgb != y.colour_rgb || x.orientation.yaw_rad != y.orientation.yaw_rad) {
+      return false;
+    }
+  }
+  return true;
+}
+
+TEST(World, SameSeedSameWorldOtherSeedOtherWorld) {
+  WorldSpec spec = LoadWorldSpec(SampleWorld());
+  const World a = GenerateWorld(spec), b = GenerateWorld(spec);
+  EXPECT_TRUE(SameObjects(a, b));
+  spec.seed += 1;
+  EXPECT_FALSE(SameObjects(a, GenerateWorld(spec)));
+}
+
+TEST(World, CountsAndClassMixMatchTheSpec) {
+  const WorldSpec spec = LoadWorldSpec(SampleWorld());
+  const World world = GenerateWorld(spec);
+  EXPECT_EQ(world.Count(ObjectKind::kLitter), 60u);
+  EXPECT_EQ(world.Count(ObjectKind::kNatural), 80u);
+  EXPECT_EQ(world.Count(ObjectKind::kBin), 3u);
+  EXPECT_EQ(world.Count(ObjectKind::kBench), 4u * 4);  // seat, back, two legs
+  EXPECT_GE(world.Count(ObjectKind::kTree), 2u * 20);  // trunk + crown; a few may not fit
+  std::map<std::string, int> classes;
+  for (const WorldObject& o : world.objects) {
+    if (o.kind == ObjectKind::kLitter) ++classes[o.label];
+  }
+  // Largest-remainder allocation: weight × 60 exactly (the weights give whole numbers).
+  const std::map<std::string, int> expected = {
+      {"bottle", 12},        {"can", 9},   {"carton", 6},     {"cup", 9},
+      {"food_container", 6}, {"other", 9}, {"plastic_bag", 9}};
+  EXPECT_EQ(classes, expected);
+}
+
+TEST(World, LitterIsDenserNearBenchesAndBins) {
+  WorldSpec spec = LoadWorldSpec(SampleWorld());
+  spec.litter.count = 600;  // enough items for a stable density ratio
+  const World world = GenerateWorld(spec);
+  constexpr double kNearM = 3;
+  const auto near = [&](const Eigen::Vector2d& p) {
+    for (const WorldObject& o : world.objects) {
+      if ((o.label == "bench_seat" || o.kind == ObjectKind::kBin) &&
+          (p - o.center_m.head<2>()).norm() < kNearM) {
+        return true;
+      }
+    }
+    return false;
+  };
+  // Areas by a 10 cm grid.
+  double near_area = 0, far_area = 0;
+  for (double x = 0.05; x < spec.size_x_m; x += 0.1) {
+    for (double y = 0.05; y < spec.size_y_m; y += 0.1)
+      (near({x, y}) ? near_area : far_area) += 0.01;
+  }
+  int near_count = 0, far_count = 0;
+  for (const WorldObject& o : world.objects) {
+    if (o.kind == ObjectKind::kLitter) ++(near(o.center_m.head<2>()) ? near_count : far_count);
+  }
+  const double ratio = (near_count / near_area) / (far_count / far_area);
+  // Expected about 10x with 3/4 of the litter around hotspots; 4x is the stated lower bound.
+  EXPECT_GT(ratio, 4.0) << near_count << " near in " << near_area << " m², " << far_count
+                        << " elsewhere in " << far_area << " m²";
+}
+
+TEST(World, StructureKeepsTheRouteClear) {
+  const WorldSpec spec = LoadWorldSpec(SampleWorld());
+  const World world = GenerateWorld(spec);
+  for (const WorldObject& o : world.objects) {
+    if (o.kind == ObjectKind::kLitter || o.kind == ObjectKind::kNatural ||
+        o.label == "tree_crown") {
+      continue;
+    }
+    for (std::size_t i = 0; i + 1 < world.route_m.size(); ++i) {
+      const double d =
+          DistanceToSegment(o.center_m.head<2>(), world.route_m[i], world.route_m[i + 1]);
+      EXPECT_GT(d, spec.structure.route_clearance_m) << o.label << " " << o.id;
+    }
+  }
+}
+
+TEST(Terrain, GradientMatchesFiniteDifferencesAndBound) {
+  const WorldSpec spec = LoadWorldSpec(SampleWorld());
+  const Terrain terrain(spec, spec.seed);
+  for (double x = 1; x < 40; x += 3.7) {
+    for (double y = 1; y < 30; y += 2.9) {
+      const Eigen::Vector2d p(x, y), dx(1e-5, 0), dy(0, 1e-5);
+      const Eigen::Vector2d g = terrain.GradientAt(p);
+      EXPECT_NEAR(g.x(), (terrain.HeightAt(p + dx) - terrain.HeightAt(p - dx)) / 2e-5, 1e-6);
+      EXPECT_NEAR(g.y(), (terrain.HeightAt(p + dy) - terrain.HeightAt(p - dy)) / 2e-5, 1e-6);
+      EXPECT_LE(g.norm(), terrain.max_slope());
+    }
+  }
+  EXPECT_EQ(terrain.GroundAt({20, 14.25}), GroundType::kDirtPath);  // on the sample's path
+  EXPECT_EQ(terrain.GroundAt({20, 12.5}), GroundType::kGrass);
+}
+
+}  // namespace
+}  // namespace littermap::sim
