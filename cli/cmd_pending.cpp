@@ -19,7 +19,6 @@ struct PendingCommand {
 const std::vector<PendingCommand>& Pending() {
   static const std::vector<PendingCommand> commands = {
       {"capture", "Record a run from the robot's sensors (not available yet)"},
-      {"reconstruct", "Reconstruct trajectory and occupancy map from a bag (not available yet)"},
       {"detect", "Detect and classify litter in a run's RGB-D frames (not available yet)"},
       {"train", "Train the litter classifier from labelled samples (not available yet)"},
       {"site", "Create and manage site databases (not available yet)"},
@@ -27,7 +26,6 @@ const std::vector<PendingCommand>& Pending() {
       {"heatmap", "Litter density maps of a site (not available yet)"},
       {"report", "HTML report of a site for park staff (not available yet)"},
       {"survey", "reconstruct, detect, ingest, heatmap and report in one go (not available yet)"},
-      {"eval", "Evaluate trajectories and detections against ground truth (not available yet)"},
   };
   return commands;
 }

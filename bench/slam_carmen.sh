@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# SLAM acceptance benchmark on the CARMEN logs (../shared/datasets/README.md): every log imported
+# with --odometry-noise 1, 2 and 3, reconstructed, and evaluated against the reference with
+# `littermap eval trajectory` (ATE RMSE after Horn alignment, RPE over 1 m pairs).
+# Prints one table row per log x seed: odometry ATE, littermap ATE, RPE, loops, scans/s.
+#   bench/slam_carmen.sh [LITTERMAP] [WORK_DIR] [LOG_NAME...]
+# A benchmark, not a test: it prints, it does not assert.
+set -euo pipefail
+
+here=$(cd "$(dirname "$0")/.." && pwd)
+littermap=${1:-$here/build/cli/littermap}
+work=${2:-${TMPDIR:-/tmp}/littermap-slam-carmen}
+shift $(( $# > 2 ? 2 : $# ))
+datasets=${LITTERMAP_DATASETS_DIR:-$here/../shared/datasets}/carmen
+logs=("$@")
+if [[ ${#logs[@]} -eq 0 ]]; then
+  logs=(aces intel csail freiburg-campus seattle orebro freiburg-101 edmonton acapulco)
+fi
+seeds=${SEEDS:-"1 2 3"}
+mkdir -p "$work"
+
+field() {  # field JSON_FILE KEY
+  python3 -c 'import json,sys; print("%.4f" % json.load(open(sys.argv[1]))[sys.argv[2]])' "$1" "$2"
+}
+
+printf '%-16s %4s %9s %9s %9s %9s %6s %6s %8s %7s\n' log seed odom_ATE ATE RPE_tr RPE_rot \
+  loops rej scans/s time_s
+for log in "${logs[@]}"; do
+  for seed in $seeds; do
+    bag=$work/$log-$seed
+    ref=$work/$log-ref.tum
+    run=$work/run-$log-$seed
+    if [[ ! -d $bag ]]; then
+      "$littermap" -q import carmen "$datasets/$log-corrected.log.gz" -o "$bag" \
+        --reference "$ref" --odometry-noise "$seed" >/dev/null
+    fi
+    rm -rf "$run"
+    "$littermap" -q reconstruct "$bag" -o "$run" >/dev/null 2>"$run.stderr" || {
+      echo "$log $seed: reconstruct failed: $(cat "$run.stderr")"; continue; }
+    "$littermap" eval trajectory "$run/odometry.tum" "$ref" --json >"$run/odometry_eval.json"
+    "$littermap" eval trajectory "$run/trajectory.tum" "$ref" --json >"$run/eval.json"
+    printf '%-16s %4s %9s %9s %9s %9s %6s %6s %8.0f %7.2f\n' "$log" "$seed" \
+      "$(field "$run/odometry_eval.json" ate_rmse_m)" "$(field "$run/eval.json" ate_rmse_m)" \
+      "$(field "$run/eval.json" rpe_trans_mean_m)" "$(field "$run/eval.json" rpe_rot_mean_deg)" \
+      "$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["loop_closures_accepted"])' "$run/quality.json")" \
+      "$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["loop_closures_rejected"])' "$run/quality.json")" \
+      "$(field "$run/quality.json" scans_per_s)" "$(field "$run/quality.json" run_time_s)"
+  done
+done

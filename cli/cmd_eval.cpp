@@ -1,0 +1,89 @@
+// littermap eval trajectory EST.tum REF.tum [--json] [--max-time-difference S] [--rpe-delta M]
+// ATE and RPE with the TUM benchmark's definitions (eval/trajectory_metrics.hpp).
+
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "capture/tum_trajectory.hpp"
+#include "cli/cli_context.hpp"
+#include "eval/trajectory_metrics.hpp"
+
+namespace littermap::cli {
+namespace {
+
+struct TrajectoryArguments {
+  std::string estimate;
+  std::string reference;
+  bool json = false;
+  eval::TrajectoryMetricsOptions options;
+};
+
+std::vector<eval::StampedPose> Load(const std::string& path) {
+  std::vector<eval::StampedPose> poses;
+  for (const TumPose& pose : ReadTumTrajectory(path)) {
+    poses.push_back({pose.stamp_ns, pose.position_m, pose.orientation});
+  }
+  return poses;
+}
+
+void RunTrajectory(const TrajectoryArguments& arguments) {
+  const eval::TrajectoryMetrics metrics = eval::EvaluateTrajectory(
+      Load(arguments.estimate), Load(arguments.reference), arguments.options);
+  if (arguments.json) {
+    nlohmann::ordered_json json;
+    json["ate_rmse_m"] = metrics.ate_rmse_m;
+    json["ate_mean_m"] = metrics.ate_mean_m;
+    json["ate_max_m"] = metrics.ate_max_m;
+    json["rpe_trans_mean_m"] = metrics.rpe_trans_mean_m;
+    json["rpe_trans_rmse_m"] = metrics.rpe_trans_rmse_m;
+    json["rpe_rot_mean_deg"] = metrics.rpe_rot_mean_deg;
+    json["associated_poses"] = metrics.associated_poses;
+    json["rpe_pairs"] = metrics.rpe_pairs;
+    std::printf("%s\n", json.dump(2).c_str());
+    return;
+  }
+  std::printf("associated poses   %zu\n", metrics.associated_poses);
+  std::printf("ATE RMSE           %.4f m (mean %.4f m, max %.4f m)\n", metrics.ate_rmse_m,
+              metrics.ate_mean_m, metrics.ate_max_m);
+  std::printf("RPE translation    %.4f m mean, %.4f m RMSE over %zu pairs %.2f m apart\n",
+              metrics.rpe_trans_mean_m, metrics.rpe_trans_rmse_m, metrics.rpe_pairs,
+              arguments.options.rpe_delta_m);
+  std::printf("RPE rotation       %.3f deg mean\n", metrics.rpe_rot_mean_deg);
+}
+
+}  // namespace
+
+void RegisterEvalCommands(CLI::App& app, CliContext& context) {
+  CLI::App* eval_command =
+      context.AddCommand(app, "eval", "Evaluate trajectories against ground truth");
+  eval_command->require_subcommand(1);
+  auto arguments = std::make_shared<TrajectoryArguments>();
+  CLI::App* trajectory = context.AddCommand(
+      *eval_command, "trajectory",
+      "ATE RMSE after rigid (Horn) alignment and RPE over pairs 1 m apart, as the TUM RGB-D "
+      "benchmark scripts compute them");
+  trajectory->add_option("EST", arguments->estimate, "Estimated trajectory (TUM format)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  trajectory->add_option("REF", arguments->reference, "Reference trajectory (TUM format)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  trajectory->add_flag("--json", arguments->json,
+                       "JSON output (ate_rmse_m, rpe_trans_mean_m, rpe_rot_mean_deg, ...)");
+  trajectory
+      ->add_option("--max-time-difference", arguments->options.max_time_difference_s,
+                   "Largest stamp difference of an associated pair, seconds")
+      ->capture_default_str();
+  trajectory
+      ->add_option("--rpe-delta", arguments->options.rpe_delta_m,
+                   "Distance travelled between the poses of an RPE pair, metres")
+      ->capture_default_str();
+  trajectory->callback(
+      [arguments, &context] { context.run = [arguments] { RunTrajectory(*arguments); }; });
+}
+
+}  // namespace littermap::cli

@@ -1,0 +1,93 @@
+// littermap reconstruct BAG -o RUN_DIR [--scan-topic T] [--odom-topic T]
+// Trajectory, occupancy map and quality of a run (DESIGN.md, "The command line").
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "cli/cli_context.hpp"
+#include "reconstruct/options_file.hpp"
+#include "reconstruct/reconstruction.hpp"
+#include "reconstruct/run_writer.hpp"
+#include "reconstruct/slam_pipeline.hpp"
+
+namespace littermap::cli {
+namespace {
+
+struct ReconstructArguments {
+  std::string bag;
+  std::string run_dir;
+  std::string options_file;
+  reconstruct::ReconstructionOptions options;
+};
+
+void RunReconstruct(const ReconstructArguments& arguments, CliContext& context) {
+  reconstruct::ReconstructionOptions options = arguments.options;
+  if (!arguments.options_file.empty()) {
+    reconstruct::ApplyOptionsFile(arguments.options_file, &options);
+  }
+  options.Validate();
+  std::vector<std::string> warnings;
+  const PlanarPose T_base_laser =
+      reconstruct::ReadLaserExtrinsic(arguments.bag, options, &warnings);
+  reconstruct::SlamPipeline pipeline(options.slam, T_base_laser);
+  reconstruct::ReconstructionResult result =
+      reconstruct::ReconstructBag(arguments.bag, options, &pipeline, context.Progress());
+  context.FinishProgress();
+  result.warnings.insert(result.warnings.begin(), warnings.begin(), warnings.end());
+  const auto& quality = pipeline.quality();
+  if (quality.scans_without_echoes > 0) {
+    result.warnings.push_back(std::to_string(quality.scans_without_echoes) +
+                              " scans had too few valid ranges and were placed by odometry");
+  }
+  if (quality.stamps_backwards + quality.stamps_duplicate > 0) {
+    result.warnings.push_back(
+        std::to_string(quality.stamps_backwards) + " scans went back in time and " +
+        std::to_string(quality.stamps_duplicate) + " repeated a time stamp; they were dropped");
+  }
+  if (quality.odometry_missing + quality.odometry_rejected > 0) {
+    result.warnings.push_back("odometry missing for " + std::to_string(quality.odometry_missing) +
+                              " scans and " + "implausible for " +
+                              std::to_string(quality.odometry_rejected) +
+                              "; a constant-velocity model stood in");
+  }
+  for (const std::string& warning : result.warnings) context.Warn(warning);
+  reconstruct::WriteRun(arguments.run_dir, pipeline, result);
+  std::printf(
+      "wrote %s: %zu poses, %zu key frames, loops %zu accepted / %zu rejected, %.2f s "
+      "(%.0f scans/s)\n",
+      arguments.run_dir.c_str(), pipeline.scans().size(), quality.key_frames,
+      quality.loops_accepted,
+      quality.loops_rejected_match + quality.loops_rejected_disagreement +
+          quality.loops_rejected_after_optimisation,
+      result.run_time_s, result.scans_per_s);
+}
+
+}  // namespace
+
+void RegisterReconstructCommand(CLI::App& app, CliContext& context) {
+  auto arguments = std::make_shared<ReconstructArguments>();
+  CLI::App* command = context.AddCommand(
+      app, "reconstruct",
+      "Reconstruct trajectory and occupancy map from a bag: RUN_DIR/trajectory.tum, "
+      "keyframes.tum, map.pgm, map.yaml, map.png, routines.csv, quality.json");
+  command->add_option("BAG", arguments->bag, "Run bag directory")
+      ->required()
+      ->check(CLI::ExistingPath);
+  command->add_option("-o,--output", arguments->run_dir, "Run directory to write")->required();
+  command->add_option("--scan-topic", arguments->options.scan_topic, "LaserScan topic")
+      ->capture_default_str();
+  command->add_option("--odom-topic", arguments->options.odometry_topic, "Odometry topic")
+      ->capture_default_str();
+  command
+      ->add_option("--options", arguments->options_file,
+                   "YAML file of tuning options (unknown keys are errors)")
+      ->check(CLI::ExistingFile);
+  command->add_flag("--no-loop-closure{false}", arguments->options.slam.loop_closure,
+                    "Track and map without loop closure (for comparisons)");
+  command->callback([arguments, &context] {
+    context.run = [arguments, &context] { RunReconstruct(*arguments, context); };
+  });
+}
+
+}  // namespace littermap::cli

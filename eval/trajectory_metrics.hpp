@@ -1,0 +1,56 @@
+#pragma once
+// Trajectory metrics with the definitions of the TUM RGB-D benchmark scripts (Sturm et al., IROS
+// 2012: associate.py, evaluate_ate.py, evaluate_rpe.py), so numbers agree with them and with evo:
+// - association: pairs whose stamps differ by less than max_time_difference_s, taken greedily in
+//   order of increasing difference, each stamp used once (associate.py);
+// - ATE: RMSE of position differences after the rigid (rotation + translation, no scale) Horn
+//   alignment of the estimate onto the reference (evaluate_ate.py);
+// - RPE: for every associated pose i, the pose j whose distance travelled along the estimate is
+//   closest to delta_m further (evaluate_rpe.py --fixed_delta --delta_unit m; Kuemmerle et al.
+//   2009 with 1 m pairs); error = inv(inv(R_i) R_j) * inv(E_i) E_j, its translation norm and
+//   rotation angle.
+
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "core/time.hpp"
+
+namespace littermap::eval {
+
+struct StampedPose {
+  TimestampNs stamp_ns = 0;
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+};
+
+struct TrajectoryMetricsOptions {
+  double max_time_difference_s = 0.02;  // associate.py's default
+  double rpe_delta_m = 1.0;             // distance travelled between the poses of an RPE pair
+  void Validate() const;
+};
+
+struct TrajectoryMetrics {
+  std::size_t associated_poses = 0;
+  double ate_rmse_m = 0;
+  double ate_mean_m = 0;
+  double ate_max_m = 0;
+  std::size_t rpe_pairs = 0;
+  double rpe_trans_mean_m = 0;
+  double rpe_trans_rmse_m = 0;
+  double rpe_rot_mean_deg = 0;
+  Eigen::Isometry3d T_reference_estimate = Eigen::Isometry3d::Identity();  // the ATE alignment
+};
+
+// Index pairs (estimate, reference) as associate.py would produce them, sorted by estimate stamp.
+std::vector<std::pair<std::size_t, std::size_t>> AssociateByTime(
+    const std::vector<StampedPose>& estimate, const std::vector<StampedPose>& reference,
+    double max_time_difference_s);
+
+// Throws BadInputError if fewer than 2 poses associate (or fewer than 3 for the alignment).
+TrajectoryMetrics EvaluateTrajectory(const std::vector<StampedPose>& estimate,
+                                     const std::vector<StampedPose>& reference,
+                                     const TrajectoryMetricsOptions& options);
+
+}  // namespace littermap::eval

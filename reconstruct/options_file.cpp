@@ -1,0 +1,110 @@
+#include "reconstruct/options_file.hpp"
+
+#include <functional>
+#include <map>
+
+#include <yaml-cpp/yaml.h>
+
+#include "core/error.hpp"
+
+namespace littermap::reconstruct {
+namespace {
+
+using Setter = std::function<void(const YAML::Node&, ReconstructionOptions*)>;
+
+template <typename T, typename Field>
+Setter Set(Field field) {
+  return [field](const YAML::Node& node, ReconstructionOptions* options) {
+    field(*options) = node.as<T>();
+  };
+}
+
+const std::map<std::string, Setter>& Setters() {
+  using O = ReconstructionOptions;
+  static const std::map<std::string, Setter> setters = {
+      {"scan_min_range_m", Set<double>([](O& o) -> double& { return o.slam.points.min_range_m; })},
+      {"scan_max_range_m", Set<double>([](O& o) -> double& { return o.slam.points.max_range_m; })},
+      {"scan_voxel_size_m", Set<double>([](O& o) -> double& { return o.slam.scan_voxel_size_m; })},
+      {"icp_point_to_line",
+       Set<bool>([](O& o) -> bool& { return o.slam.tracker.icp.point_to_line; })},
+      {"icp_max_correspondence_distances_m",
+       Set<std::vector<double>>([](O& o) -> std::vector<double>& {
+         return o.slam.tracker.icp.max_correspondence_distances_m;
+       })},
+      {"icp_inlier_distance_m",
+       Set<double>([](O& o) -> double& { return o.slam.tracker.icp.inlier_distance_m; })},
+      {"min_matching_ratio",
+       Set<double>([](O& o) -> double& { return o.slam.tracker.min_matching_ratio; })},
+      {"min_buffer_matching_ratio",
+       Set<double>([](O& o) -> double& { return o.slam.tracker.min_buffer_matching_ratio; })},
+      {"key_frame_translation_m", Set<double>([](O& o) -> double& {
+         return o.slam.tracker.key_frames.translation_threshold_m;
+       })},
+      {"key_frame_rotation_rad", Set<double>([](O& o) -> double& {
+         return o.slam.tracker.key_frames.rotation_threshold_rad;
+       })},
+      {"local_window_key_frames", Set<std::size_t>([](O& o) -> std::size_t& {
+         return o.slam.tracker.key_frames.local_window;
+       })},
+      {"loop_closure", Set<bool>([](O& o) -> bool& { return o.slam.loop_closure; })},
+      {"loop_search_radius_m",
+       Set<double>([](O& o) -> double& { return o.slam.loops.search_radius_m; })},
+      {"loop_min_path_separation_m",
+       Set<double>([](O& o) -> double& { return o.slam.loops.min_path_separation_m; })},
+      {"loop_submap_half_window",
+       Set<std::size_t>([](O& o) -> std::size_t& { return o.slam.loops.submap_half_window; })},
+      {"loop_min_matching_ratio",
+       Set<double>([](O& o) -> double& { return o.slam.loops.min_matching_ratio; })},
+      {"loop_max_rms_residual_m",
+       Set<double>([](O& o) -> double& { return o.slam.loops.max_rms_residual_m; })},
+      {"loop_cooldown_key_frames",
+       Set<std::size_t>([](O& o) -> std::size_t& { return o.slam.loop_cooldown_key_frames; })},
+      {"loop_loss_scale",
+       Set<double>([](O& o) -> double& { return o.slam.graph.loop_loss_scale; })},
+      {"edge_sigma_floor_m",
+       Set<double>([](O& o) -> double& { return o.slam.edge_sigma_floor_m; })},
+      {"edge_sigma_floor_rad",
+       Set<double>([](O& o) -> double& { return o.slam.edge_sigma_floor_rad; })},
+      {"max_loop_residual_m",
+       Set<double>([](O& o) -> double& { return o.slam.max_loop_residual_m; })},
+      {"map_cell_size_m", Set<double>([](O& o) -> double& { return o.slam.grid.cell_size_m; })},
+      {"map_max_range_m", Set<double>([](O& o) -> double& { return o.slam.map_max_range_m; })},
+  };
+  return setters;
+}
+
+}  // namespace
+
+std::vector<std::string> OptionsFileKeys() {
+  std::vector<std::string> keys;
+  for (const auto& [key, setter] : Setters()) keys.push_back(key);
+  return keys;
+}
+
+void ApplyOptionsFile(const std::filesystem::path& path, ReconstructionOptions* options) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path.string());
+  } catch (const YAML::BadFile&) {
+    throw UsageError(path.string() + ": cannot read the options file");
+  } catch (const YAML::Exception& e) {
+    throw BadInputError(path.string() + ": not YAML: " + e.what());
+  }
+  if (root.IsNull()) return;
+  if (!root.IsMap()) throw BadInputError(path.string() + ": expected a map of option: value");
+  for (const auto& entry : root) {
+    const std::string key = entry.first.as<std::string>();
+    const auto setter = Setters().find(key);
+    if (setter == Setters().end()) {
+      throw BadInputError(path.string() + ": unknown option '" + key + "'");
+    }
+    try {
+      setter->second(entry.second, options);
+    } catch (const YAML::Exception&) {
+      throw BadInputError(path.string() + ": option '" + key + "' has a value of the wrong type");
+    }
+  }
+  options->Validate();
+}
+
+}  // namespace littermap::reconstruct

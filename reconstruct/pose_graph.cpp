@@ -1,0 +1,139 @@
+#include "reconstruct/pose_graph.hpp"
+
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include <ceres/ceres.h>
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+
+#include "core/error.hpp"
+
+namespace littermap::reconstruct {
+namespace {
+
+template <typename T>
+T NormalizeAngle(const T& angle) {
+  // Into [-pi, pi), differentiable almost everywhere (as ceres/examples/slam/pose_graph_2d).
+  const T two_pi(2.0 * std::numbers::pi);
+  return angle - two_pi * ceres::floor((angle + T(std::numbers::pi)) / two_pi);
+}
+
+// Residual of a relative pose measurement T_ab between poses a = (x, y, theta) and b:
+//   r = S * [ R(theta_a)^T (t_b - t_a) - t_ab ;  normalize(theta_b - theta_a - theta_ab) ]
+// with S the upper Cholesky factor of the information (S^T S = I), so ||r||^2 = e^T I e.
+class RelativePoseError {
+ public:
+  RelativePoseError(const PlanarPose& T_ab, const Eigen::Matrix3d& sqrt_information)
+      : T_ab_(T_ab), sqrt_information_(sqrt_information) {}
+
+  template <typename T>
+  bool operator()(const T* const a, const T* const b, T* residual) const {
+    const T c = ceres::cos(a[2]), s = ceres::sin(a[2]);
+    const T dx = b[0] - a[0], dy = b[1] - a[1];
+    Eigen::Matrix<T, 3, 1> e;
+    e(0) = c * dx + s * dy - T(T_ab_.x_m);
+    e(1) = -s * dx + c * dy - T(T_ab_.y_m);
+    e(2) = NormalizeAngle(b[2] - a[2] - T(T_ab_.theta_rad));
+    Eigen::Map<Eigen::Matrix<T, 3, 1>> r(residual);
+    r = sqrt_information_.cast<T>() * e;
+    return true;
+  }
+
+  static ceres::CostFunction* Create(const PlanarPose& T_ab, const Eigen::Matrix3d& information) {
+    return new ceres::AutoDiffCostFunction<RelativePoseError, 3, 3, 3>(
+        new RelativePoseError(T_ab, SqrtInformation(information)));
+  }
+
+  static Eigen::Matrix3d SqrtInformation(const Eigen::Matrix3d& information) {
+    // A tiny ridge keeps a rank-deficient estimate (a corridor) positive definite.
+    const Eigen::Matrix3d symmetric =
+        0.5 * (information + information.transpose()) + 1e-9 * Eigen::Matrix3d::Identity();
+    return symmetric.llt().matrixU();
+  }
+
+ private:
+  PlanarPose T_ab_;
+  Eigen::Matrix3d sqrt_information_;
+};
+
+}  // namespace
+
+void PoseGraphOptions::Validate() const {
+  if (!(loop_loss_scale > 0)) throw UsageError("pose graph: loop_loss_scale must be > 0");
+  if (max_iterations < 1) throw UsageError("pose graph: max_iterations must be >= 1");
+}
+
+PoseGraphResult OptimizePoseGraph(std::vector<PlanarPose>* poses,
+                                  const std::vector<PoseGraphEdge>& edges,
+                                  const PoseGraphOptions& options) {
+  PoseGraphResult result;
+  if (poses->size() < 2 || edges.empty()) {
+    result.usable = true;
+    return result;
+  }
+  std::vector<std::array<double, 3>> parameters(poses->size());
+  for (std::size_t i = 0; i < poses->size(); ++i) {
+    parameters[i] = {(*poses)[i].x_m, (*poses)[i].y_m, (*poses)[i].theta_rad};
+  }
+  ceres::Problem problem;
+  for (const PoseGraphEdge& edge : edges) {
+    if (edge.from >= poses->size() || edge.to >= poses->size()) {
+      throw InternalError("pose graph: edge " + std::to_string(edge.from) + " -> " +
+                          std::to_string(edge.to) + " names a missing pose");
+    }
+    ceres::LossFunction* loss = edge.loop ? new ceres::HuberLoss(options.loop_loss_scale) : nullptr;
+    problem.AddResidualBlock(RelativePoseError::Create(edge.T_from_to, edge.information), loss,
+                             parameters[edge.from].data(), parameters[edge.to].data());
+  }
+  if (problem.HasParameterBlock(parameters[0].data())) {
+    problem.SetParameterBlockConstant(parameters[0].data());
+  }
+  ceres::Solver::Options solver_options;
+  solver_options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+  solver_options.max_num_iterations = options.max_iterations;
+  solver_options.num_threads = 1;
+  solver_options.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver_options, &problem, &summary);
+  result.usable = summary.IsSolutionUsable();
+  result.iterations = static_cast<int>(summary.iterations.size());
+  result.initial_cost = summary.initial_cost;
+  result.final_cost = summary.final_cost;
+  if (result.usable) {
+    for (std::size_t i = 0; i < poses->size(); ++i) {
+      (*poses)[i] = {parameters[i][0], parameters[i][1], WrapAngle(parameters[i][2])};
+    }
+  }
+  return result;
+}
+
+Eigen::Matrix3d EdgeInformation(const Eigen::Matrix3d& information_world, double theta_from_rad,
+                                double sigma_floor_m, double sigma_floor_rad) {
+  // e_world = G e_local with G = diag(R(theta_from), 1), so Sigma_local = G^T Sigma_world G.
+  const Eigen::Matrix3d symmetric = 0.5 * (information_world + information_world.transpose());
+  const Eigen::Matrix3d covariance_world =
+      (symmetric + 1e-9 * Eigen::Matrix3d::Identity()).inverse();
+  Eigen::Matrix3d G = Eigen::Matrix3d::Identity();
+  const double c = std::cos(theta_from_rad), s = std::sin(theta_from_rad);
+  G.topLeftCorner<2, 2>() << c, -s, s, c;
+  Eigen::Matrix3d covariance = G.transpose() * covariance_world * G;
+  covariance += Eigen::Vector3d(sigma_floor_m * sigma_floor_m, sigma_floor_m * sigma_floor_m,
+                                sigma_floor_rad * sigma_floor_rad)
+                    .asDiagonal();
+  return covariance.inverse();
+}
+
+double EdgeChi2(const std::vector<PlanarPose>& poses, const PoseGraphEdge& edge) {
+  const PlanarPose measured_error =
+      Between(edge.T_from_to, Between(poses[edge.from], poses[edge.to]));
+  // Same error as the residual to first order; exact for the translation in a's frame.
+  const PlanarPose predicted = Between(poses[edge.from], poses[edge.to]);
+  Eigen::Vector3d e(predicted.x_m - edge.T_from_to.x_m, predicted.y_m - edge.T_from_to.y_m,
+                    measured_error.theta_rad);
+  return e.dot(edge.information * e);
+}
+
+}  // namespace littermap::reconstruct

@@ -1,0 +1,56 @@
+#pragma once
+// Pose graph over key frames, optimised with Ceres: nodes are SE(2) poses T_world_keyframe,
+// edges relative measurements T_from_to (scan matching between consecutive key frames, odometry
+// where matching failed, loop closures) weighted by their information. The first pose is held
+// constant (it fixes the gauge); loop edges get a robust (Huber) loss so that a wrong loop that
+// slipped through the checks pulls with a bounded force rather than quadratically; Huber, unlike
+// Cauchy, stays convex, so a true loop far from the drifted estimate is still pulled in.
+
+#include <cstddef>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/planar_pose.hpp"
+
+namespace littermap::reconstruct {
+
+struct PoseGraphEdge {
+  std::size_t from = 0;
+  std::size_t to = 0;
+  PlanarPose T_from_to;
+  Eigen::Matrix3d information = Eigen::Matrix3d::Identity();  // order (x, y, theta)
+  bool loop = false;
+};
+
+struct PoseGraphOptions {
+  double loop_loss_scale = 3.0;  // Huber scale on the whitened loop residual
+  int max_iterations = 50;
+  void Validate() const;
+};
+
+struct PoseGraphResult {
+  bool usable = false;  // Ceres returned a usable solution
+  int iterations = 0;
+  double initial_cost = 0;
+  double final_cost = 0;
+};
+
+// Optimises poses in place.
+PoseGraphResult OptimizePoseGraph(std::vector<PlanarPose>* poses,
+                                  const std::vector<PoseGraphEdge>& edges,
+                                  const PoseGraphOptions& options);
+
+// The information of an edge from a into b, given the information of b's pose in the world
+// frame as a matcher estimated it (order x, y, theta): rotated into a's frame, where the edge's
+// translation residual lives, and with a floor added to the covariance. The floor stands for
+// what the Gauss-Newton Hessian does not see (correlated points, the map's own error), which
+// otherwise makes every edge millimetre-sure and a true loop look like an outlier.
+Eigen::Matrix3d EdgeInformation(const Eigen::Matrix3d& information_world, double theta_from_rad,
+                                double sigma_floor_m, double sigma_floor_rad);
+
+// r^T I r of one edge at the given poses (chi-squared with 3 degrees of freedom if the
+// information is right).
+double EdgeChi2(const std::vector<PlanarPose>& poses, const PoseGraphEdge& edge);
+
+}  // namespace littermap::reconstruct

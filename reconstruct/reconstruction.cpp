@@ -1,0 +1,116 @@
+#include "reconstruct/reconstruction.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <optional>
+
+#include "capture/bag_reader.hpp"
+#include "capture/message_stream.hpp"
+#include "core/error.hpp"
+
+namespace littermap::reconstruct {
+namespace {
+
+double Yaw(const msg::Quaternion& q) {
+  return std::atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z));
+}
+
+TimestampNs StampOf(const msg::Header& header) {
+  return static_cast<TimestampNs>(header.stamp.sec) * kNanosecondsPerSecond +
+         static_cast<TimestampNs>(header.stamp.nanosec);
+}
+
+LaserScan ToScan(const msg::LaserScan& message) {
+  LaserScan scan;
+  scan.stamp_ns = StampOf(message.header);
+  scan.angle_min_rad = message.angle_min;
+  scan.angle_increment_rad = message.angle_increment;
+  scan.range_min_m = message.range_min;
+  scan.range_max_m = message.range_max;
+  scan.scan_time_s = message.scan_time;
+  scan.ranges_m = message.ranges;
+  return scan;
+}
+
+void RequireTopic(const BagReader& reader, const std::string& topic,
+                  const std::filesystem::path& bag) {
+  for (const auto& info : reader.info().topics) {
+    if (info.name == topic) return;
+  }
+  throw BadInputError(bag.string() + ": no topic " + topic + " (choose one with --scan-topic)");
+}
+
+}  // namespace
+
+void ReconstructionOptions::Validate() const {
+  if (scan_topic.empty()) throw UsageError("reconstruct: the scan topic must not be empty");
+  if (!(max_odometry_age_s > 0)) throw UsageError("reconstruct: max_odometry_age_s must be > 0");
+  slam.Validate();
+}
+
+PlanarPose ReadLaserExtrinsic(const std::filesystem::path& bag,
+                              const ReconstructionOptions& options,
+                              std::vector<std::string>* warnings) {
+  BagReader reader(bag);
+  reader.SetTopicFilter({options.tf_static_topic});
+  MessageStream stream(reader);
+  while (auto message = stream.Next()) {
+    const auto* tf = std::get_if<msg::TFMessage>(&message->message);
+    if (tf == nullptr) continue;
+    for (const auto& transform : tf->transforms) {
+      if (transform.child_frame_id != frames::kLaser) continue;
+      return {transform.transform.translation.x, transform.transform.translation.y,
+              Yaw(transform.transform.rotation)};
+    }
+  }
+  warnings->push_back(bag.string() + ": no " + std::string(frames::kBase) + " -> " +
+                      frames::kLaser + " transform on " + options.tf_static_topic +
+                      "; assuming the laser sits at base_link");
+  return {};
+}
+
+ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
+                                    const ReconstructionOptions& options, SlamPipeline* pipeline,
+                                    const ProgressCallback& progress) {
+  options.Validate();
+  const auto start = std::chrono::steady_clock::now();
+  ReconstructionResult result;
+  BagReader reader(bag);
+  RequireTopic(reader, options.scan_topic, bag);
+  std::uint64_t total = 0;
+  for (const auto& info : reader.info().topics) {
+    if (info.name == options.scan_topic) total = info.message_count;
+  }
+  reader.SetTopicFilter({options.scan_topic, options.odometry_topic});
+  MessageStream stream(reader);
+  std::optional<std::pair<TimestampNs, PlanarPose>> odometry;
+  std::uint64_t done = 0;
+  const std::string task = "reconstructing " + bag.filename().string();
+  while (auto message = stream.Next()) {
+    if (const auto* odom = std::get_if<msg::Odometry>(&message->message)) {
+      const auto& pose = odom->pose.pose;
+      odometry.emplace(StampOf(odom->header),
+                       PlanarPose{pose.position.x, pose.position.y, Yaw(pose.orientation)});
+      continue;
+    }
+    const auto* laser = std::get_if<msg::LaserScan>(&message->message);
+    if (laser == nullptr) continue;
+    const LaserScan scan = ToScan(*laser);
+    std::optional<PlanarPose> T_odom_base;
+    if (odometry &&
+        std::abs(ToSeconds(scan.stamp_ns - odometry->first)) <= options.max_odometry_age_s) {
+      T_odom_base = odometry->second;
+    }
+    pipeline->AddScan(scan, T_odom_base);
+    if (++done % 50 == 0) ReportProgress(progress, {task, done, total});
+  }
+  ReportProgress(progress, {task, done, total});
+  pipeline->Finish();
+  for (const std::string& warning : stream.warnings()) result.warnings.push_back(warning);
+  result.run_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.scans_per_s = result.run_time_s > 0 ? static_cast<double>(done) / result.run_time_s : 0.0;
+  return result;
+}
+
+}  // namespace littermap::reconstruct

@@ -1,0 +1,42 @@
+#pragma once
+// `littermap reconstruct` as a library call: reads the scans, odometry and the base_link -> laser
+// extrinsic of a run bag and runs the SLAM pipeline over them.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "capture/topics.hpp"
+#include "core/progress.hpp"
+#include "reconstruct/slam_pipeline.hpp"
+
+namespace littermap::reconstruct {
+
+struct ReconstructionOptions {
+  std::string scan_topic = topics::kScan;
+  std::string odometry_topic = topics::kOdometry;
+  std::string tf_static_topic = topics::kTfStatic;
+  // Odometry older than this at a scan's time counts as missing.
+  double max_odometry_age_s = 0.2;
+  SlamOptions slam;
+  void Validate() const;
+};
+
+struct ReconstructionResult {
+  std::vector<std::string> warnings;
+  double run_time_s = 0;
+  double scans_per_s = 0;
+};
+
+// Runs over the bag; the pipeline holds trajectory, key frames, map and quality afterwards.
+// Throws BadInputError if the bag has no scan topic or a message does not decode.
+ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
+                                    const ReconstructionOptions& options, SlamPipeline* pipeline,
+                                    const ProgressCallback& progress);
+
+// The laser extrinsic from the bag's /tf_static (identity with a warning if absent).
+PlanarPose ReadLaserExtrinsic(const std::filesystem::path& bag,
+                              const ReconstructionOptions& options,
+                              std::vector<std::string>* warnings);
+
+}  // namespace littermap::reconstruct

@@ -1,0 +1,89 @@
+#include "reconstruct/run_writer.hpp"
+
+#include <cstdio>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "capture/tum_trajectory.hpp"
+#include "core/error.hpp"
+
+namespace littermap::reconstruct {
+namespace {
+
+void WriteRoutines(const std::filesystem::path& path, const std::vector<ScanRecord>& scans) {
+  std::ofstream out(path);
+  if (!out) throw UsageError(path.string() + ": cannot create");
+  out << "time,routine,matching_ratio\n";
+  char ratio[32];
+  for (const ScanRecord& scan : scans) {
+    std::snprintf(ratio, sizeof ratio, "%.4f", scan.matching_ratio);
+    out << FormatTumStamp(scan.stamp_ns) << ',' << RoutineName(scan.routine) << ',' << ratio
+        << '\n';
+  }
+  if (!out) throw InternalError(path.string() + ": writing failed");
+}
+
+}  // namespace
+
+std::string QualityJson(const SlamQuality& quality, const ReconstructionResult& result) {
+  nlohmann::ordered_json json;
+  json["scans"] = quality.scans_in;
+  json["scans_tracked"] = quality.scans_tracked;
+  json["scans_without_echoes"] = quality.scans_without_echoes;
+  json["stamps_backwards"] = quality.stamps_backwards;
+  json["stamps_duplicate"] = quality.stamps_duplicate;
+  json["odometry_missing"] = quality.odometry_missing;
+  json["odometry_rejected"] = quality.odometry_rejected;
+  nlohmann::ordered_json routines;
+  for (std::size_t r = 0; r < quality.routine_counts.size(); ++r) {
+    routines[std::string(RoutineName(static_cast<Routine>(r)))] = quality.routine_counts[r];
+  }
+  json["routines"] = routines;
+  json["key_frames"] = quality.key_frames;
+  json["loop_closures_found"] = quality.loop_candidates;
+  json["loop_closures_accepted"] = quality.loops_accepted;
+  json["loop_closures_rejected"] = quality.loops_rejected_match +
+                                   quality.loops_rejected_disagreement +
+                                   quality.loops_rejected_after_optimisation;
+  json["loop_closures_rejected_match"] = quality.loops_rejected_match;
+  json["loop_closures_rejected_disagreement"] = quality.loops_rejected_disagreement;
+  json["loop_closures_rejected_after_optimisation"] = quality.loops_rejected_after_optimisation;
+  json["optimisations"] = quality.optimisations;
+  json["final_cost"] = quality.final_cost;
+  json["run_time_s"] = result.run_time_s;
+  json["scans_per_s"] = result.scans_per_s;
+  json["warnings"] = result.warnings;
+  return json.dump(2) + "\n";
+}
+
+void WriteRun(const std::filesystem::path& run_dir, const SlamPipeline& pipeline,
+              const ReconstructionResult& result) {
+  std::error_code error;
+  std::filesystem::create_directories(run_dir, error);
+  if (error) throw UsageError(run_dir.string() + ": cannot create: " + error.message());
+  std::vector<TumPose> trajectory;
+  for (const ScanRecord& scan : pipeline.scans()) {
+    trajectory.push_back(TumPoseFromPlanar(scan.stamp_ns, scan.T_world_base));
+  }
+  WriteTumTrajectory(run_dir / "trajectory.tum", trajectory);
+  // The odometry at the scans' times, to compare SLAM with odometry alone.
+  std::vector<TumPose> odometry;
+  for (const ScanRecord& scan : pipeline.scans()) {
+    if (scan.T_odom_base) odometry.push_back(TumPoseFromPlanar(scan.stamp_ns, *scan.T_odom_base));
+  }
+  if (!odometry.empty()) WriteTumTrajectory(run_dir / "odometry.tum", odometry);
+  std::vector<TumPose> key_frames;
+  for (const auto& [stamp, pose] : pipeline.KeyFramePoses()) {
+    key_frames.push_back(TumPoseFromPlanar(stamp, pose));
+  }
+  WriteTumTrajectory(run_dir / "keyframes.tum", key_frames);
+  pipeline.map().WritePgmYaml(run_dir / "map.pgm", run_dir / "map.yaml");
+  pipeline.map().WritePng(run_dir / "map.png");
+  WriteRoutines(run_dir / "routines.csv", pipeline.scans());
+  std::ofstream quality(run_dir / "quality.json");
+  if (!quality) throw UsageError((run_dir / "quality.json").string() + ": cannot create");
+  quality << QualityJson(pipeline.quality(), result);
+}
+
+}  // namespace littermap::reconstruct

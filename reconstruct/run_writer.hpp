@@ -1,0 +1,22 @@
+#pragma once
+// The files of a reconstructed run (DESIGN.md, "The command line"): trajectory.tum (a pose for
+// every scan, optimised), keyframes.tum, map.pgm + map.yaml (ROS map_server), map.png (preview),
+// routines.csv (per scan: time, routine, matching ratio; thesis fig. 2.5.2.1) and quality.json.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "reconstruct/reconstruction.hpp"
+#include "reconstruct/slam_pipeline.hpp"
+
+namespace littermap::reconstruct {
+
+// Creates run_dir if needed. Throws UsageError if a file cannot be created.
+void WriteRun(const std::filesystem::path& run_dir, const SlamPipeline& pipeline,
+              const ReconstructionResult& result);
+
+// quality.json's text (stable key names).
+std::string QualityJson(const SlamQuality& quality, const ReconstructionResult& result);
+
+}  // namespace littermap::reconstruct

@@ -1,0 +1,191 @@
+#include "reconstruct/slam_pipeline.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+
+namespace littermap::reconstruct {
+namespace {
+
+Eigen::Matrix3d DiagonalInformation(double sigma_m, double sigma_rad) {
+  return Eigen::Vector3d(1 / (sigma_m * sigma_m), 1 / (sigma_m * sigma_m),
+                         1 / (sigma_rad * sigma_rad))
+      .asDiagonal();
+}
+
+}  // namespace
+
+void SlamOptions::Validate() const {
+  points.Validate();
+  tracker.Validate();
+  loops.Validate();
+  graph.Validate();
+  grid.Validate();
+  if (!(map_max_range_m > 0)) throw UsageError("slam: map_max_range_m must be > 0");
+  if (!(edge_sigma_floor_m > 0) || !(edge_sigma_floor_rad > 0) || !(odometry_sigma_m > 0) ||
+      !(odometry_sigma_rad > 0)) {
+    throw UsageError("slam: edge sigma floors and odometry sigmas must be > 0");
+  }
+  if (!(max_loop_residual_m > 0) || !(max_loop_residual_rad > 0)) {
+    throw UsageError("slam: loop residual limits must be > 0");
+  }
+}
+
+SlamPipeline::SlamPipeline(const SlamOptions& options, const PlanarPose& T_base_laser,
+                           RgbdFallback* rgbd)
+    : options_((options.Validate(), options)),
+      T_base_laser_(T_base_laser),
+      map_(options.tracker.key_frames, options.tracker.icp),
+      tracker_(options.tracker, &map_, rgbd),
+      loop_closer_(options.loops),
+      grid_(options.grid) {}
+
+void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<PlanarPose>& T_odom_base) {
+  ++quality_.scans_in;
+  if (last_stamp_ns_ && scan.stamp_ns < *last_stamp_ns_) {
+    ++quality_.stamps_backwards;  // a TUM trajectory cannot go back in time: drop the scan
+    return;
+  }
+  if (last_stamp_ns_ && scan.stamp_ns == *last_stamp_ns_) {
+    ++quality_.stamps_duplicate;
+    return;
+  }
+  last_stamp_ns_ = scan.stamp_ns;
+  ScanPoints points = ScanToPoints(scan, T_base_laser_, options_.points);
+  TrackInput input;
+  input.stamp_ns = scan.stamp_ns;
+  input.T_odom_base = T_odom_base;
+  if (points.valid_beams >= options_.min_scan_points) {
+    input.points_base = VoxelDownsample(points.points_base, options_.scan_voxel_size_m);
+  } else {
+    ++quality_.scans_without_echoes;  // tracked on the prediction alone
+  }
+  if (!T_odom_base) ++quality_.odometry_missing;
+  const TrackStep step = tracker_.Track(scans_.size(), input);
+  ++quality_.routine_counts[static_cast<std::size_t>(step.routine)];
+  ++quality_.scans_tracked;
+  ScanRecord record;
+  record.scan_index = scans_.size();
+  record.stamp_ns = scan.stamp_ns;
+  record.routine = step.routine;
+  record.matching_ratio = step.matching_ratio;
+  record.key_frame = step.key_frame;
+  record.T_keyframe_base =
+      Between(map_.key_frames()[step.key_frame].T_world_base, step.T_world_base);
+  record.T_world_base = step.T_world_base;
+  record.T_odom_base = T_odom_base;
+  scans_.push_back(record);
+  scan_points_base_.push_back(std::move(points.points_base));
+  if (step.new_key_frame && step.key_frame > 0) {
+    AddGraphEdge(step);
+    if (options_.loop_closure) CloseLoops(step.key_frame);
+  }
+}
+
+void SlamPipeline::AddGraphEdge(const TrackStep& step) {
+  const auto& frames = map_.key_frames();
+  PoseGraphEdge edge;
+  edge.from = step.key_frame - 1;
+  edge.to = step.key_frame;
+  edge.T_from_to = Between(frames[edge.from].T_world_base, frames[edge.to].T_world_base);
+  edge.information =
+      step.routine == Routine::kOdometryOnly
+          ? DiagonalInformation(options_.odometry_sigma_m, options_.odometry_sigma_rad)
+          : EdgeInformation(step.information, frames[edge.from].T_world_base.theta_rad,
+                            options_.edge_sigma_floor_m, options_.edge_sigma_floor_rad);
+  edges_.push_back(edge);
+}
+
+void SlamPipeline::CloseLoops(std::size_t key_frame) {
+  if (any_loop_ && key_frame < last_loop_key_frame_ + options_.loop_cooldown_key_frames) return;
+  const LoopAttempt attempt = loop_closer_.TryClose(map_, key_frame);
+  switch (attempt.verdict) {
+    case LoopVerdict::kNoCandidate:
+      return;
+    case LoopVerdict::kRejectedMatch:
+      ++quality_.loop_candidates;
+      ++quality_.loops_rejected_match;
+      return;
+    case LoopVerdict::kRejectedDisagreement:
+      ++quality_.loop_candidates;
+      ++quality_.loops_rejected_disagreement;
+      return;
+    case LoopVerdict::kAccepted:
+      ++quality_.loop_candidates;
+      break;
+  }
+  PoseGraphEdge edge = *attempt.edge;
+  edge.information = EdgeInformation(attempt.match.information,
+                                     map_.key_frames()[edge.from].T_world_base.theta_rad,
+                                     options_.edge_sigma_floor_m, options_.edge_sigma_floor_rad);
+  edges_.push_back(edge);
+  unchecked_loops_.push_back(edges_.size() - 1);
+  last_loop_key_frame_ = key_frame;
+  any_loop_ = true;
+  Optimise();
+}
+
+void SlamPipeline::Optimise() {
+  const std::vector<PlanarPose> before = map_.Poses();
+  std::vector<PlanarPose> poses = before;
+  PoseGraphResult result = OptimizePoseGraph(&poses, edges_, options_.graph);
+  ++quality_.optimisations;
+  // Consistency after optimisation: a loop the graph cannot satisfy is taken out again, and the
+  // graph optimised without it (false loops must not stay in).
+  bool removed = false;
+  for (std::size_t index : unchecked_loops_) {
+    PoseGraphEdge& edge = edges_[index];
+    const PlanarPose residual = Between(edge.T_from_to, Between(poses[edge.from], poses[edge.to]));
+    if (!result.usable || std::hypot(residual.x_m, residual.y_m) > options_.max_loop_residual_m ||
+        std::abs(residual.theta_rad) > options_.max_loop_residual_rad) {
+      edge.information.setZero();  // marked for removal
+      removed = true;
+      ++quality_.loops_rejected_after_optimisation;
+    } else {
+      ++quality_.loops_accepted;
+    }
+  }
+  unchecked_loops_.clear();
+  if (removed) {
+    std::erase_if(edges_, [](const PoseGraphEdge& e) { return e.information.isZero(); });
+    poses = before;
+    result = OptimizePoseGraph(&poses, edges_, options_.graph);
+    ++quality_.optimisations;
+  }
+  if (!result.usable) return;
+  quality_.final_cost = result.final_cost;
+  const PlanarPose T_new_old = Compose(poses.back(), Inverse(before.back()));
+  map_.SetPoses(poses);
+  tracker_.OnKeyFramesMoved(T_new_old);
+}
+
+void SlamPipeline::Finish() {
+  if (!unchecked_loops_.empty()) Optimise();
+  quality_.key_frames = map_.key_frames().size();
+  quality_.odometry_rejected = tracker_.odometry_rejected();
+  const auto& frames = map_.key_frames();
+  const double max_range_sq = options_.map_max_range_m * options_.map_max_range_m;
+  for (std::size_t i = 0; i < scans_.size(); ++i) {
+    ScanRecord& record = scans_[i];
+    record.T_world_base = Compose(frames[record.key_frame].T_world_base, record.T_keyframe_base);
+    const PlanarPose T_world_laser = Compose(record.T_world_base, T_base_laser_);
+    Points2 hits;
+    hits.reserve(scan_points_base_[i].size());
+    for (const Eigen::Vector2d& p : scan_points_base_[i]) {
+      const Eigen::Vector2d from_laser = p - Eigen::Vector2d(T_base_laser_.x_m, T_base_laser_.y_m);
+      if (from_laser.squaredNorm() <= max_range_sq)
+        hits.push_back(Transform(record.T_world_base, p));
+    }
+    grid_.InsertScan({T_world_laser.x_m, T_world_laser.y_m}, hits);
+  }
+}
+
+std::vector<std::pair<TimestampNs, PlanarPose>> SlamPipeline::KeyFramePoses() const {
+  std::vector<std::pair<TimestampNs, PlanarPose>> poses;
+  for (const KeyFrame& k : map_.key_frames()) poses.emplace_back(k.stamp_ns, k.T_world_base);
+  return poses;
+}
+
+}  // namespace littermap::reconstruct

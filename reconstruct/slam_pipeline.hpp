@@ -1,0 +1,111 @@
+#pragma once
+// The 2D SLAM pipeline of `littermap reconstruct`, fed one scan at a time: tracking against the
+// two-layer map (thesis 2.3, 2.5), a pose graph over key frames with loop closure, optimised with
+// Ceres, and at the end an occupancy grid (thesis 2.1) rendered from the optimised poses.
+// Bad input is handled and counted, never fatal: scans without a single valid echo, time going
+// backwards, duplicate stamps, missing or implausible odometry.
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "core/laser_scan.hpp"
+#include "core/planar_pose.hpp"
+#include "core/time.hpp"
+#include "reconstruct/loop_closer.hpp"
+#include "reconstruct/occupancy_grid.hpp"
+#include "reconstruct/pose_graph.hpp"
+#include "reconstruct/scan_points.hpp"
+#include "reconstruct/tracker.hpp"
+
+namespace littermap::reconstruct {
+
+struct SlamOptions {
+  ScanPointsOptions points;
+  double scan_voxel_size_m = 0.05;   // downsampling for matching
+  std::size_t min_scan_points = 20;  // fewer valid echoes: the scan is not matched
+  TrackerOptions tracker;
+  LoopCloserOptions loops;
+  PoseGraphOptions graph;
+  OccupancyGridOptions grid;
+  double map_max_range_m = 30.0;  // echoes drawn into the occupancy grid
+  // Covariance floor of every matched edge (EdgeInformation).
+  double edge_sigma_floor_m = 0.02;
+  double edge_sigma_floor_rad = 0.01;
+  double odometry_sigma_m = 0.1;  // graph edge of an odometry-only key frame
+  double odometry_sigma_rad = 0.05;
+  bool loop_closure = true;
+  std::size_t loop_cooldown_key_frames = 3;  // after an accepted loop
+  // An optimised loop edge further than this from its measurement did not fit the graph.
+  double max_loop_residual_m = 0.2;
+  double max_loop_residual_rad = 0.05;
+  void Validate() const;
+};
+
+struct ScanRecord {
+  std::size_t scan_index = 0;
+  TimestampNs stamp_ns = 0;
+  Routine routine = Routine::kOdometryOnly;
+  double matching_ratio = 0;
+  std::size_t key_frame = 0;
+  PlanarPose T_keyframe_base;
+  PlanarPose T_world_base;                // final, after optimisation
+  std::optional<PlanarPose> T_odom_base;  // the odometry used, for comparisons
+};
+
+struct SlamQuality {
+  std::size_t scans_in = 0;
+  std::size_t scans_tracked = 0;
+  std::size_t scans_without_echoes = 0;         // too few valid ranges (all max-range / NaN)
+  std::size_t stamps_backwards = 0;             // dropped
+  std::size_t stamps_duplicate = 0;             // dropped
+  std::size_t odometry_missing = 0;             // constant-velocity prediction used
+  std::size_t odometry_rejected = 0;            // implausible jump
+  std::array<std::size_t, 4> routine_counts{};  // indexed by Routine
+  std::size_t key_frames = 0;
+  std::size_t loop_candidates = 0;
+  std::size_t loops_accepted = 0;
+  std::size_t loops_rejected_match = 0;
+  std::size_t loops_rejected_disagreement = 0;
+  std::size_t loops_rejected_after_optimisation = 0;
+  std::size_t optimisations = 0;
+  double final_cost = 0;
+};
+
+class SlamPipeline {
+ public:
+  SlamPipeline(const SlamOptions& options, const PlanarPose& T_base_laser,
+               RgbdFallback* rgbd = nullptr);
+
+  void AddScan(const LaserScan& scan, const std::optional<PlanarPose>& T_odom_base);
+  // Final optimisation; fills the scans' final poses and renders the map.
+  void Finish();
+
+  const std::vector<ScanRecord>& scans() const { return scans_; }
+  std::vector<std::pair<TimestampNs, PlanarPose>> KeyFramePoses() const;
+  const OccupancyGrid& map() const { return grid_; }
+  const SlamQuality& quality() const { return quality_; }
+
+ private:
+  void AddGraphEdge(const TrackStep& step);
+  void CloseLoops(std::size_t key_frame);
+  void Optimise();
+
+  SlamOptions options_;
+  PlanarPose T_base_laser_;
+  KeyFrameMap map_;
+  Tracker tracker_;
+  LoopCloser loop_closer_;
+  OccupancyGrid grid_;
+  std::vector<PoseGraphEdge> edges_;
+  std::vector<std::size_t> unchecked_loops_;  // indices into edges_ since the last optimisation
+  std::vector<ScanRecord> scans_;
+  std::vector<Points2> scan_points_base_;  // full resolution, for the map
+  std::size_t last_loop_key_frame_ = 0;
+  bool any_loop_ = false;
+  std::optional<TimestampNs> last_stamp_ns_;
+  SlamQuality quality_;
+};
+
+}  // namespace littermap::reconstruct

@@ -1,0 +1,165 @@
+#include "reconstruct/tracker.hpp"
+
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace littermap::reconstruct {
+namespace {
+
+PlanarPose Scale(const PlanarPose& motion, double factor) {
+  return {motion.x_m * factor, motion.y_m * factor, motion.theta_rad * factor};
+}
+
+bool Plausible(const TrackerOptions& options, const PlanarPose& from, const PlanarPose& predicted,
+               const PlanarPose& matched) {
+  const PlanarPose motion = Between(from, predicted);
+  const PlanarPose correction = Between(predicted, matched);
+  const double fraction = options.max_correction_fraction;
+  return std::hypot(correction.x_m, correction.y_m) <=
+             options.max_correction_m + fraction * std::hypot(motion.x_m, motion.y_m) &&
+         std::abs(correction.theta_rad) <=
+             options.max_correction_rad + fraction * std::abs(motion.theta_rad);
+}
+
+bool Finite(const PlanarPose& p) {
+  return std::isfinite(p.x_m) && std::isfinite(p.y_m) && std::isfinite(p.theta_rad);
+}
+
+}  // namespace
+
+std::string_view RoutineName(Routine routine) {
+  switch (routine) {
+    case Routine::kGlobal:
+      return "global";
+    case Routine::kBuffer:
+      return "buffer";
+    case Routine::kRgbd:
+      return "rgbd";
+    case Routine::kOdometryOnly:
+      return "odometry-only";
+  }
+  return "odometry-only";
+}
+
+void TrackerOptions::Validate() const {
+  icp.Validate();
+  key_frames.Validate();
+  buffer.Validate();
+  if (!(min_matching_ratio > 0 && min_matching_ratio <= 1) ||
+      !(min_buffer_matching_ratio > 0 && min_buffer_matching_ratio <= 1)) {
+    throw UsageError("tracker: matching ratios must be in (0, 1]");
+  }
+  if (!(max_odometry_speed_m_s > 0) || !(max_odometry_turn_rate_rad_s > 0) ||
+      !(max_scan_gap_s > 0)) {
+    throw UsageError("tracker: odometry limits must be > 0");
+  }
+}
+
+Tracker::Tracker(const TrackerOptions& options, KeyFrameMap* map, RgbdFallback* rgbd)
+    : options_(options), map_(map), rgbd_(rgbd), buffer_(options.buffer) {
+  options_.Validate();
+}
+
+PlanarPose Tracker::Predict(const TrackInput& input, bool* odometry_used) {
+  const double dt = ToSeconds(input.stamp_ns - last_stamp_ns_);
+  *odometry_used = false;
+  std::optional<PlanarPose> increment;
+  if (input.T_odom_base && last_odom_ && Finite(*input.T_odom_base)) {
+    const PlanarPose d = Between(*last_odom_, *input.T_odom_base);
+    const double span = std::max(dt, 0.0);
+    if (std::hypot(d.x_m, d.y_m) <=
+            std::max(options_.max_odometry_speed_m_s * span, options_.max_odometry_step_m) &&
+        std::abs(d.theta_rad) <= std::max(options_.max_odometry_turn_rate_rad_s * span,
+                                          options_.max_odometry_step_rad)) {
+      increment = d;
+      *odometry_used = true;
+    } else {
+      ++odometry_rejected_;
+    }
+  }
+  if (!increment) {
+    // Constant velocity (the motion of the last step continues), nothing after a long gap.
+    increment =
+        dt <= options_.max_scan_gap_s ? Scale(velocity_per_s_, std::max(dt, 0.0)) : PlanarPose{};
+  }
+  return Compose(pose_, *increment);
+}
+
+TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
+  TrackStep step;
+  if (!started_) {
+    // The first scan defines the world frame.
+    started_ = true;
+    pose_ = {};
+    step.routine = Routine::kGlobal;
+    step.matching_ratio = 1;
+  } else {
+    const PlanarPose predicted = Predict(input, &step.odometry_used);
+    step.T_world_base = predicted;
+    const IcpResult global =
+        MatchIcp(input.points_base, map_->LocalTarget(), predicted, options_.icp);
+    step.matching_ratio = global.inlier_ratio;
+    if (global.converged && global.inlier_ratio >= options_.min_matching_ratio &&
+        Plausible(options_, pose_, predicted, global.T_target_source)) {
+      step.routine = Routine::kGlobal;
+      step.T_world_base = global.T_target_source;
+      step.information = global.information;
+    } else if (const BufferedFrame* near = buffer_.Nearest(predicted)) {
+      const IcpTarget target(TransformPoints(near->T_world_base, near->points_base), options_.icp);
+      const IcpResult local = MatchIcp(input.points_base, target, predicted, options_.icp);
+      if (local.converged && local.inlier_ratio >= options_.min_buffer_matching_ratio &&
+          Plausible(options_, pose_, predicted, local.T_target_source)) {
+        step.routine = Routine::kBuffer;
+        step.T_world_base = local.T_target_source;
+        step.matching_ratio = local.inlier_ratio;
+        step.information = local.information;
+      }
+    }
+    if (step.information.isZero() && rgbd_ != nullptr) {
+      if (const auto rgbd_pose = rgbd_->AlignAt(input.stamp_ns, predicted)) {
+        const IcpResult verify =
+            MatchIcp(input.points_base, map_->LocalTarget(), *rgbd_pose, options_.icp);
+        if (verify.converged &&
+            verify.inlier_ratio >= options_.min_matching_ratio - options_.rgbd_ratio_slack) {
+          step.routine = Routine::kRgbd;
+          step.T_world_base = verify.T_target_source;
+          step.matching_ratio = verify.inlier_ratio;
+          step.information = verify.information;
+        }
+      }
+    }
+    if (step.information.isZero()) step.routine = Routine::kOdometryOnly;
+    const double dt = ToSeconds(input.stamp_ns - last_stamp_ns_);
+    const PlanarPose moved = Between(pose_, step.T_world_base);
+    velocity_per_s_ = dt > 1e-6 ? Scale(moved, 1.0 / dt) : PlanarPose{};
+    path_length_m_ += std::hypot(moved.x_m, moved.y_m);
+    pose_ = step.T_world_base;
+  }
+  step.T_world_base = pose_;
+  last_stamp_ns_ = input.stamp_ns;
+  if (input.T_odom_base && Finite(*input.T_odom_base)) last_odom_ = input.T_odom_base;
+
+  // Routine 2 success forces a key frame: "fuse the scan so the global map learns".
+  const bool force = step.routine == Routine::kBuffer;
+  // Odometry-only scans still make key frames: otherwise a long failure would leave the top map
+  // behind the robot and matching could never recover.
+  if (force || map_->NeedsKeyFrame(pose_)) {
+    KeyFrame key_frame{scan_index, input.stamp_ns, pose_, input.points_base, path_length_m_, {}};
+    step.key_frame = map_->Add(std::move(key_frame));
+    step.new_key_frame = true;
+  } else {
+    step.key_frame = map_->key_frames().size() - 1;
+  }
+  if (buffer_.NeedsFrame(pose_) && step.routine != Routine::kOdometryOnly) {
+    buffer_.Add({pose_, input.points_base});
+  }
+  return step;
+}
+
+void Tracker::OnKeyFramesMoved(const PlanarPose& T_new_old) {
+  pose_ = Compose(T_new_old, pose_);
+  buffer_.Correct(T_new_old);
+}
+
+}  // namespace littermap::reconstruct

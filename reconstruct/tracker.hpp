@@ -1,0 +1,99 @@
+#pragma once
+// The hybrid tracker of thesis 2.5 (Alg. 2.5.1.1) for one scan at a time:
+//   1. match against the top map (GKMap, routine "global") from the predicted pose;
+//   2. if the matching ratio is too low, match against the nearest buffered key frame
+//      (routine "buffer") and force a key frame so the top map learns the new pattern;
+//   3. if that fails too, ask the RGB-D aligner (routine "rgbd", a seam: RgbdFallback) for a
+//      pose and verify it with the 2D matcher;
+//   otherwise keep the predicted pose (routine "odometry-only").
+// The prediction is the odometry increment since the last scan, or a constant-velocity model
+// when odometry is missing or implausible.
+
+#include <cstddef>
+#include <optional>
+#include <string_view>
+
+#include "core/planar_pose.hpp"
+#include "core/time.hpp"
+#include "reconstruct/icp_matcher.hpp"
+#include "reconstruct/keyframe_buffer.hpp"
+#include "reconstruct/keyframe_map.hpp"
+
+namespace littermap::reconstruct {
+
+enum class Routine { kGlobal, kBuffer, kRgbd, kOdometryOnly };
+std::string_view RoutineName(Routine routine);
+
+// Routine 3's seam: the RGB-D aligner (thesis 2.4) gives a pose for a scan's time from the
+// nearest RGB-D key frame, or nothing. Implemented in its own issue.
+class RgbdFallback {
+ public:
+  virtual ~RgbdFallback() = default;
+  virtual std::optional<PlanarPose> AlignAt(TimestampNs stamp_ns,
+                                            const PlanarPose& T_world_base_predicted) = 0;
+};
+
+struct TrackerOptions {
+  IcpOptions icp;
+  KeyFrameMapOptions key_frames;
+  KeyFrameBufferOptions buffer;
+  double min_matching_ratio = 0.35;        // routine 1 accepted at or above
+  double min_buffer_matching_ratio = 0.4;  // routine 2 accepted at or above
+  double rgbd_ratio_slack = 0.1;           // routine 3: the thesis's alpha
+  // Odometry moving faster than this between two scans is treated as broken. Steps up to
+  // the per-step limits always pass: stamps may be synthesised (dt near 0) or sparse.
+  double max_odometry_speed_m_s = 5.0;
+  double max_odometry_turn_rate_rad_s = 6.0;
+  double max_odometry_step_m = 2.0;
+  double max_odometry_step_rad = 1.5;
+  double max_scan_gap_s = 1.0;  // a longer gap does not trust the constant-velocity model
+  // A match that moves the pose further than this from the prediction slid along a corridor or
+  // snapped to the wrong wall: base + fraction of the predicted motion.
+  double max_correction_m = 0.3;
+  double max_correction_rad = 0.12;
+  double max_correction_fraction = 0.25;
+  void Validate() const;
+};
+
+struct TrackInput {
+  TimestampNs stamp_ns = 0;
+  Points2 points_base;                    // downsampled scan points, at least a few
+  std::optional<PlanarPose> T_odom_base;  // odometry at the scan's time, if any
+};
+
+struct TrackStep {
+  Routine routine = Routine::kOdometryOnly;
+  PlanarPose T_world_base;
+  double matching_ratio = 0;
+  bool odometry_used = false;  // false: constant-velocity prediction
+  bool new_key_frame = false;
+  std::size_t key_frame = 0;  // the key frame this scan's pose is anchored to
+  Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
+};
+
+class Tracker {
+ public:
+  Tracker(const TrackerOptions& options, KeyFrameMap* map, RgbdFallback* rgbd = nullptr);
+
+  TrackStep Track(std::size_t scan_index, const TrackInput& input);
+  // After the pose graph moved the key frames: re-anchor the current pose and the buffer.
+  void OnKeyFramesMoved(const PlanarPose& T_new_old_last_key_frame);
+  std::size_t odometry_rejected() const { return odometry_rejected_; }
+
+ private:
+  PlanarPose Predict(const TrackInput& input, bool* odometry_used);
+
+  TrackerOptions options_;
+  KeyFrameMap* map_;
+  RgbdFallback* rgbd_;
+  KeyFrameBuffer buffer_;
+  bool started_ = false;
+  PlanarPose pose_;
+  PlanarPose velocity_per_s_;  // body-frame motion per second, for the constant-velocity model
+  TimestampNs last_stamp_ns_ = 0;
+  std::optional<PlanarPose> last_odom_;
+  double path_length_m_ = 0;
+  std::size_t odometry_rejected_ = 0;
+};
+
+}  // namespace littermap::reconstruct

@@ -1,0 +1,130 @@
+// Real data: CARMEN logs from ../shared/datasets/carmen imported with seeded odometry noise
+// (datasets/README.md). ICP on real consecutive scans, and the whole pipeline on ACES against
+// the corrected reference. A missing data set fails these tests.
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "capture/bag_reader.hpp"
+#include "capture/message_stream.hpp"
+#include "capture/tum_trajectory.hpp"
+#include "eval/trajectory_metrics.hpp"
+#include "reconstruct/icp_matcher.hpp"
+#include "reconstruct/reconstruction.hpp"
+#include "reconstruct/slam_pipeline.hpp"
+#include "support/run_command.hpp"
+#include "support/temp_dir.hpp"
+
+namespace littermap::reconstruct {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180;
+
+std::filesystem::path Log(const std::string& name) {
+  return std::filesystem::path(LITTERMAP_DATASETS_DIR) / "carmen" / (name + "-corrected.log.gz");
+}
+
+void Import(const std::string& name, const testing::TempDir& dir) {
+  ASSERT_TRUE(std::filesystem::exists(Log(name))) << Log(name) << " is missing";
+  const auto result = littermap::testing::RunLittermap(
+      "-q import carmen " + Log(name).string() + " -o " + (dir / "bag").string() + " --reference " +
+      (dir / "ref.tum").string() + " --odometry-noise 1");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+}
+
+std::vector<LaserScan> ReadScans(const std::filesystem::path& bag, std::size_t count) {
+  BagReader reader(bag);
+  reader.SetTopicFilter({"/scan"});
+  MessageStream stream(reader);
+  std::vector<LaserScan> scans;
+  while (auto message = stream.Next()) {
+    const auto& m = std::get<msg::LaserScan>(message->message);
+    LaserScan scan;
+    scan.angle_min_rad = m.angle_min;
+    scan.angle_increment_rad = m.angle_increment;
+    scan.range_min_m = m.range_min;
+    scan.range_max_m = m.range_max;
+    scan.ranges_m = m.ranges;
+    scans.push_back(scan);
+    if (scans.size() == count) break;
+  }
+  return scans;
+}
+
+PlanarPose Planar(const TumPose& pose) {
+  const Eigen::Vector3d x = pose.orientation * Eigen::Vector3d::UnitX();
+  return {pose.position_m.x(), pose.position_m.y(), std::atan2(x.y(), x.x())};
+}
+
+TEST(CarmenSlam, IcpOnRealIntelScans) {
+  testing::TempDir dir;
+  Import("intel", dir);
+  std::vector<std::string> warnings;
+  const PlanarPose T_base_laser = ReadLaserExtrinsic(dir / "bag", {}, &warnings);
+  const auto scans = ReadScans(dir / "bag", 40);
+  ASSERT_EQ(scans.size(), 40u);
+  const auto reference = ReadTumTrajectory(dir / "ref.tum");
+  IcpOptions options;
+  const auto points = [&](std::size_t i) {
+    return VoxelDownsample(ScanToPoints(scans[i], T_base_laser, {}).points_base, 0.05);
+  };
+  // 1. A real scan against itself moved by a known offset: recovered exactly.
+  const PlanarPose offset{0.2, -0.1, 3 * kDeg};
+  const IcpTarget self(points(20), options);
+  const IcpResult moved = MatchIcp(TransformPoints(Inverse(offset), points(20)), self, {}, options);
+  ASSERT_TRUE(moved.converged);
+  const PlanarPose recovered = Between(offset, moved.T_target_source);  // should be identity
+  EXPECT_NEAR(recovered.x_m, 0, 1e-3);
+  EXPECT_NEAR(recovered.y_m, 0, 1e-3);
+  EXPECT_NEAR(recovered.theta_rad, 0, 0.05 * kDeg);
+  // 2. Consecutive real scans against the corrected reference, which is good to a few cm:
+  // 6 cm and 1 degree (the reference's own accuracy plus ours; measured at most 4.6 cm, 0.6 deg).
+  int matched = 0;
+  for (std::size_t i = 20; i + 1 < 40; ++i) {
+    const PlanarPose truth = Between(Planar(reference[i]), Planar(reference[i + 1]));
+    const IcpTarget target(points(i), options);
+    const IcpResult result = MatchIcp(points(i + 1), target, truth, options);
+    ASSERT_TRUE(result.converged) << i;
+    EXPECT_NEAR(result.T_target_source.x_m, truth.x_m, 0.06) << i;
+    EXPECT_NEAR(result.T_target_source.y_m, truth.y_m, 0.06) << i;
+    EXPECT_NEAR(result.T_target_source.theta_rad, truth.theta_rad, 1 * kDeg) << i;
+    ++matched;
+  }
+  EXPECT_EQ(matched, 19);
+}
+
+TEST(CarmenSlam, AcesWholeLogMeetsAccuracyTargets) {
+  testing::TempDir dir;
+  Import("aces", dir);
+  ReconstructionOptions options;
+  std::vector<std::string> warnings;
+  SlamPipeline pipeline(options.slam, ReadLaserExtrinsic(dir / "bag", options, &warnings));
+  ReconstructBag(dir / "bag", options, &pipeline, {});
+  std::vector<eval::StampedPose> estimate, reference, odometry;
+  for (const ScanRecord& scan : pipeline.scans()) {
+    const TumPose pose = TumPoseFromPlanar(scan.stamp_ns, scan.T_world_base);
+    estimate.push_back({pose.stamp_ns, pose.position_m, pose.orientation});
+    const TumPose odom = TumPoseFromPlanar(scan.stamp_ns, *scan.T_odom_base);
+    odometry.push_back({odom.stamp_ns, odom.position_m, odom.orientation});
+  }
+  for (const TumPose& pose : ReadTumTrajectory(dir / "ref.tum")) {
+    reference.push_back({pose.stamp_ns, pose.position_m, pose.orientation});
+  }
+  const auto metrics = eval::EvaluateTrajectory(estimate, reference, {});
+  const auto odometry_metrics = eval::EvaluateTrajectory(odometry, reference, {});
+  EXPECT_EQ(metrics.associated_poses, 440u);
+  // Measured on this log with seed 1: ATE 0.086 m, RPE 0.042 m, odometry ATE 10.4 m. The targets
+  // of the issue (0.10 m, 0.05 m) are the bounds.
+  EXPECT_LE(metrics.ate_rmse_m, 0.10);
+  EXPECT_LE(metrics.rpe_trans_mean_m, 0.05);
+  EXPECT_LT(metrics.ate_rmse_m, odometry_metrics.ate_rmse_m / 20);
+  EXPECT_GE(pipeline.quality().loops_accepted, 10u);
+}
+
+}  // namespace
+}  // namespace littermap::reconstruct
