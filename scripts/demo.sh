@@ -1,23 +1,47 @@
 #!/usr/bin/env bash
-# Runs the furthest littermap stage that exists on the sample data and says where the result is.
+# Runs the furthest littermap stages that exist on the samples and says where the results are:
+# a simulated survey of samples/worlds/park_small.yaml and the real Intel Research Lab laser log,
+# each recorded into a run bag, reconstructed, and scored against its ground truth.
 #   scripts/demo.sh LITTERMAP_BINARY OUT_DIR
 set -euo pipefail
 littermap=$1
 out=$2
 here=$(cd "$(dirname "$0")/.." && pwd)
-sample="$here/../shared/datasets/carmen/intel-corrected.log.gz"
+world="$here/samples/worlds/park_small.yaml"
+intel="$here/../shared/datasets/carmen/intel-corrected.log.gz"
 
-if [[ ! -f "$sample" ]]; then
-  echo "littermap demo: the sample log $sample is not there" >&2
-  exit 2
-fi
-rm -rf "$out/intel"
-mkdir -p "$out"
-echo "littermap demo: importing the Intel Research Lab laser log into a run bag"
-"$littermap" import carmen "$sample" -o "$out/intel" --reference "$out/intel-reference.tum" \
+for input in "$world" "$intel"; do
+  if [[ ! -f "$input" ]]; then
+    echo "littermap demo: $input is not there" >&2
+    exit 2
+  fi
+done
+rm -rf "$out/park_small" "$out/intel"
+mkdir -p "$out/park_small" "$out/intel"
+
+step() { echo; echo "== $*"; }
+
+step "simulating a survey of the sample park ($world)"
+"$littermap" simulate "$world" -o "$out/park_small/bag" --truth "$out/park_small/truth"
+step "reconstructing the simulated run"
+"$littermap" reconstruct "$out/park_small/bag" -o "$out/park_small/run"
+step "trajectory error against the simulator's ground truth"
+"$littermap" eval trajectory "$out/park_small/run/trajectory.tum" \
+  "$out/park_small/truth/trajectory.tum"
+
+step "importing the Intel Research Lab laser log (real data, corrupted odometry, seed 1)"
+"$littermap" import carmen "$intel" -o "$out/intel/bag" --reference "$out/intel/reference.tum" \
   --odometry-noise 1
-echo
-"$littermap" info "$out/intel"
-echo
-echo "littermap demo: run bag in $out/intel, reference trajectory in $out/intel-reference.tum"
-echo "(later stages — reconstruct, detect, heatmap, report — will extend this demo as they land)"
+step "reconstructing the Intel run"
+"$littermap" reconstruct "$out/intel/bag" -o "$out/intel/run"
+step "trajectory error against the log's corrected poses"
+"$littermap" eval trajectory "$out/intel/run/trajectory.tum" "$out/intel/reference.tum"
+
+step "results"
+cat <<EOF
+simulated park: bag $out/park_small/bag, ground truth $out/park_small/truth,
+                map $out/park_small/run/map.png, trajectory $out/park_small/run/trajectory.tum
+Intel lab:      bag $out/intel/bag, map $out/intel/run/map.png,
+                trajectory $out/intel/run/trajectory.tum
+(detection, the site database, heatmaps and the HTML report extend this demo as they land)
+EOF
