@@ -19,7 +19,7 @@ World& SampleWorld() {
   return world;
 }
 
-// Poses along the route, camera 0.45 m up and pitched 20° down like the sample robot.
+// Poses along the route, camera 0.5 m up and pitched 25° down like the sample robot.
 std::vector<Eigen::Isometry3d> RoutePoses(const World& world) {
   Eigen::Matrix3d R_body_optical;
   R_body_optical << 0, 0, 1, -1, 0, 0, 0, -1, 0;
@@ -30,8 +30,8 @@ std::vector<Eigen::Isometry3d> RoutePoses(const World& world) {
     for (double s = 0; s < 1; s += 0.25) {
       const Eigen::Vector2d p = a + s * (b - a);
       Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-      T.linear() = RotationFromRpy({0, 20 * std::numbers::pi / 180, yaw}) * R_body_optical;
-      T.translation() = Eigen::Vector3d(p.x(), p.y(), world.terrain.HeightAt(p) + 0.45);
+      T.linear() = RotationFromRpy({0, 25 * std::numbers::pi / 180, yaw}) * R_body_optical;
+      T.translation() = Eigen::Vector3d(p.x(), p.y(), world.terrain.HeightAt(p) + 0.5);
       poses.push_back(T);
     }
   }

@@ -1,87 +1,155 @@
 #include "capture/sim_recorder.hpp"
 
+#include <algorithm>
 #include <chrono>
-#include <cmath>
+#include <limits>
+#include <memory>
 #include <numbers>
 
+#include "capture/image_codec.hpp"
 #include "capture/output_guard.hpp"
+#include "capture/sim_messages.hpp"
 #include "capture/topics.hpp"
 #include "sim/ground_truth.hpp"
+#include "sim/instance_masks.hpp"
+#include "sim/rgbd_camera.hpp"
 #include "sim/simulation.hpp"
 
 namespace littermap {
 namespace {
 
-msg::Header MakeHeader(TimestampNs stamp_ns, const char* frame_id) {
-  msg::Header header;
-  header.stamp.sec = static_cast<std::int32_t>(stamp_ns / kNanosecondsPerSecond);
-  header.stamp.nanosec = static_cast<std::uint32_t>(stamp_ns % kNanosecondsPerSecond);
-  header.frame_id = frame_id;
-  return header;
+using Clock = std::chrono::steady_clock;
+
+double SecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-msg::Quaternion ToMsg(const Eigen::Quaterniond& q) { return {q.x(), q.y(), q.z(), q.w()}; }
-
-msg::TransformStamped Transform(TimestampNs stamp_ns, const char* child,
-                                const Eigen::Isometry3d& T_base_child) {
-  msg::TransformStamped transform;
-  transform.header = MakeHeader(stamp_ns, frames::kBase);
-  transform.child_frame_id = child;
-  const Eigen::Vector3d t = T_base_child.translation();
-  transform.transform.translation = {t.x(), t.y(), t.z()};
-  transform.transform.rotation = ToMsg(Eigen::Quaterniond(T_base_child.linear()));
-  return transform;
+sim::RgbdCameraOptions CameraOptions(const sim::WorldSpec& spec, bool masks) {
+  sim::RgbdCameraOptions options;
+  options.seed = spec.seed;
+  options.output_instance_ids = masks;
+  options.instance_mask_every_n_frames = std::max(1, spec.truth.mask_every_n_frames);
+  return options;
 }
 
-// The optical frame (z forward, x right, y down) in the camera body frame (x forward, z up).
-Eigen::Isometry3d BodyToOptical() {
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.linear() << 0, 0, 1, -1, 0, 0, 0, -1, 0;
-  return T;
-}
+// Writes every message of a simulated run in time order: camera frames fall between the
+// odometry ticks (their clock is offset and jittered), laser scans and IMU samples on them.
+class RunRecorder {
+ public:
+  RunRecorder(const sim::Simulation& simulation, BagWriter& writer,
+              const std::filesystem::path& truth_dir, const SimRecordOptions& options,
+              const ProgressCallback& progress)
+      : simulation_(simulation),
+        spec_(simulation.world().spec),
+        writer_(writer),
+        progress_(progress),
+        start_ns_(FromSeconds(spec_.start_time_s)),
+        camera_(simulation.world(),
+                CameraOptions(spec_, !truth_dir.empty() && spec_.truth.mask_every_n_frames > 0)),
+        masks_(camera_.options().output_instance_ids
+                   ? std::make_unique<sim::InstanceMaskWriter>(truth_dir)
+                   : nullptr) {
+    codec_.jpeg_quality = spec_.robot.camera.jpeg_quality;
+    codec_.png_compression = options.png_compression;
+  }
 
-msg::Odometry MakeOdometry(TimestampNs stamp_ns, const PlanarPose& T_odom_base,
-                           const sim::RobotState& state) {
-  msg::Odometry odometry;
-  odometry.header = MakeHeader(stamp_ns, frames::kOdom);
-  odometry.child_frame_id = frames::kBase;
-  odometry.pose.pose.position = {T_odom_base.x_m, T_odom_base.y_m, 0};
-  odometry.pose.pose.orientation = {0, 0, std::sin(T_odom_base.theta_rad / 2),
-                                    std::cos(T_odom_base.theta_rad / 2)};
-  odometry.twist.twist.linear.x = state.linear_mps;
-  odometry.twist.twist.angular.z = state.angular_radps;
-  return odometry;
-}
+  void Run(SimRecordResult& result) {
+    AddTopics();
+    writer_.WriteMessage(topics::kTfStatic, start_ns_,
+                         sim_messages::StaticTransforms(start_ns_, simulation_));
+    const auto& states = simulation_.states();
+    for (std::size_t i = 0; i < states.size(); ++i) {
+      const double t = static_cast<double>(i) / spec_.robot.odometry.rate_hz;
+      WriteFramesBefore(t);
+      // Odometry before the scan of the same tick: a consumer that sees a scan has the
+      // odometry of its time already.
+      const TimestampNs stamp = start_ns_ + FromSeconds(t);
+      writer_.WriteMessage(
+          topics::kOdometry, stamp,
+          sim_messages::Odometry(stamp,
+                                 Between(simulation_.odometry().front(), simulation_.odometry()[i]),
+                                 states[i]));
+      WriteImuUpTo(t);
+      WriteScansUpTo(t);
+    }
+    WriteFramesBefore(std::numeric_limits<double>::infinity());
+    if (masks_) masks_->Close();
+    result.scans = scan_;
+    result.odometry = states.size();
+    result.imu = imu_;
+    result.frames = frame_;
+    result.masks = masks_ ? masks_->written() : 0;
+    result.render_s = render_s_;
+  }
 
-msg::LaserScan MakeScan(TimestampNs stamp_ns, const LaserScan& scan) {
-  msg::LaserScan out;
-  out.header = MakeHeader(stamp_ns, frames::kLaser);
-  out.angle_min = static_cast<float>(scan.angle_min_rad);
-  out.angle_max = static_cast<float>(scan.angle_max_rad());
-  out.angle_increment = static_cast<float>(scan.angle_increment_rad);
-  // A rotating mirror: one revolution per scan period.
-  out.time_increment =
-      static_cast<float>(scan.scan_time_s * scan.angle_increment_rad / (2 * std::numbers::pi));
-  out.scan_time = static_cast<float>(scan.scan_time_s);
-  out.range_min = static_cast<float>(scan.range_min_m);
-  out.range_max = static_cast<float>(scan.range_max_m);
-  out.ranges = scan.ranges_m;
-  return out;
-}
+ private:
+  void AddTopics() {
+    writer_.AddTopic<msg::TFMessage>(topics::kTfStatic, TopicQos::kLatched);
+    writer_.AddTopic<msg::Odometry>(topics::kOdometry, TopicQos::kReliable);
+    writer_.AddTopic<msg::Imu>(topics::kImu, TopicQos::kSensorData);
+    writer_.AddTopic<msg::LaserScan>(topics::kScan, TopicQos::kSensorData);
+    writer_.AddTopic<msg::CameraInfo>(topics::kCameraInfo, TopicQos::kSensorData);
+    writer_.AddTopic<msg::CompressedImage>(topics::kColor, TopicQos::kSensorData);
+    writer_.AddTopic<msg::CameraInfo>(topics::kDepthCameraInfo, TopicQos::kSensorData);
+    writer_.AddTopic<msg::CompressedImage>(topics::kDepth, TopicQos::kSensorData);
+  }
 
-msg::Imu MakeImu(TimestampNs stamp_ns, const sim::ImuSample& sample, double tilt_sigma_rad) {
-  msg::Imu imu;
-  imu.header = MakeHeader(stamp_ns, frames::kBase);
-  imu.orientation = ToMsg(sample.orientation);
-  const double var = tilt_sigma_rad * tilt_sigma_rad;
-  imu.orientation_covariance = {var, 0, 0, 0, var, 0, 0, 0, 1e6};  // yaw: unknown
-  const Eigen::Vector3d& w = sample.angular_velocity_radps;
-  const Eigen::Vector3d& a = sample.linear_acceleration_mps2;
-  imu.angular_velocity = {w.x(), w.y(), w.z()};
-  imu.angular_velocity_covariance = {1e-4, 0, 0, 0, 1e-4, 0, 0, 0, 1e-4};
-  imu.linear_acceleration = {a.x(), a.y(), a.z()};
-  return imu;
-}
+  void WriteImuUpTo(double t) {
+    const double tilt_sigma_rad = spec_.robot.imu.tilt_noise_deg * std::numbers::pi / 180;
+    for (; imu_ < simulation_.imu_count() &&
+           static_cast<double>(imu_) / spec_.robot.imu.rate_hz <= t + 1e-9;
+         ++imu_) {
+      const sim::ImuSample sample = simulation_.Imu(imu_);
+      const TimestampNs stamp = start_ns_ + FromSeconds(sample.t_s);
+      writer_.WriteMessage(topics::kImu, stamp, sim_messages::Imu(stamp, sample, tilt_sigma_rad));
+    }
+  }
+
+  void WriteScansUpTo(double t) {
+    for (; scan_ < simulation_.scan_count() && simulation_.ScanTime(scan_) <= t + 1e-9; ++scan_) {
+      const LaserScan laser = simulation_.Scan(scan_);
+      const TimestampNs stamp = start_ns_ + laser.stamp_ns;
+      writer_.WriteMessage(topics::kScan, stamp, sim_messages::Scan(stamp, laser));
+    }
+  }
+
+  void WriteFramesBefore(double t) {
+    const std::size_t frames = simulation_.camera_frame_count();
+    for (; frame_ < frames && simulation_.CameraFrameTime(frame_) < t; ++frame_) {
+      WriteFrame(frame_);
+      ReportProgress(progress_, {"simulating", frame_ + 1, frames});
+    }
+  }
+
+  // Colour and depth share the stamp (the Kinect's registered depth) and the optical frame.
+  void WriteFrame(std::size_t k) {
+    const double t = simulation_.CameraFrameTime(k);
+    const TimestampNs stamp = start_ns_ + FromSeconds(t);
+    const msg::Header header = sim_messages::Header(stamp, frames::kCamera);
+    const auto render_start = Clock::now();
+    const sim::RgbdRender render = camera_.Render(simulation_.TrueOpticalPose(t), k);
+    render_s_ += SecondsSince(render_start);
+    const msg::CameraInfo info = sim_messages::CameraInfo(camera_.options().intrinsics, header);
+    writer_.WriteMessage(topics::kCameraInfo, stamp, info);
+    writer_.WriteMessage(topics::kColor, stamp, EncodeColorJpeg(render.colour_bgr, header, codec_));
+    writer_.WriteMessage(topics::kDepthCameraInfo, stamp, info);
+    writer_.WriteMessage(topics::kDepth, stamp, EncodeDepthPng(render.depth_mm, header, codec_));
+    if (masks_ && sim::WantsInstanceMask(static_cast<std::int64_t>(k), camera_.options())) {
+      masks_->Write(k, stamp, render.instance_ids);
+    }
+  }
+
+  const sim::Simulation& simulation_;
+  const sim::WorldSpec& spec_;
+  BagWriter& writer_;
+  const ProgressCallback& progress_;
+  const TimestampNs start_ns_;
+  sim::RgbdCamera camera_;
+  std::unique_ptr<sim::InstanceMaskWriter> masks_;
+  ImageCodecOptions codec_;
+  std::size_t scan_ = 0, imu_ = 0, frame_ = 0;
+  double render_s_ = 0;
+};
 
 }  // namespace
 
@@ -96,61 +164,21 @@ SimRecordResult RecordSimulation(const sim::WorldSpec& world_spec,
   OutputGuard guard;
   guard.Add(bag_path);
   guard.Add(truth_dir);
-  const TimestampNs start_ns = FromSeconds(spec.start_time_s);
   BagWriter writer(bag_path, options.bag);
-  writer.AddTopic<msg::TFMessage>(topics::kTfStatic, TopicQos::kLatched);
-  writer.AddTopic<msg::Odometry>(topics::kOdometry, TopicQos::kReliable);
-  writer.AddTopic<msg::Imu>(topics::kImu, TopicQos::kSensorData);
-  writer.AddTopic<msg::LaserScan>(topics::kScan, TopicQos::kSensorData);
-  writer.WriteMessage(
-      topics::kTfStatic, start_ns,
-      msg::TFMessage{
-          {Transform(start_ns, frames::kLaser, simulation.T_base_laser()),
-           Transform(start_ns, frames::kCamera, simulation.T_base_camera() * BodyToOptical())}});
-
   SimRecordResult result;
-  const auto& states = simulation.states();
-  const double odom_rate_hz = spec.robot.odometry.rate_hz;
-  const double tilt_sigma_rad = spec.robot.imu.tilt_noise_deg * std::numbers::pi / 180;
-  const std::size_t scans = simulation.scan_count(), imus = simulation.imu_count();
-  std::size_t scan = 0, imu = 0;
-  const auto clock_start = std::chrono::steady_clock::now();
-  for (std::size_t i = 0; i < states.size(); ++i) {
-    const double t = static_cast<double>(i) / odom_rate_hz;
-    // Odometry first: a consumer that sees a scan has the odometry of its time already.
-    writer.WriteMessage(
-        topics::kOdometry, start_ns + FromSeconds(t),
-        MakeOdometry(start_ns + FromSeconds(t),
-                     Between(simulation.odometry().front(), simulation.odometry()[i]), states[i]));
-    for (; imu < imus && static_cast<double>(imu) / spec.robot.imu.rate_hz <= t + 1e-9; ++imu) {
-      const sim::ImuSample sample = simulation.Imu(imu);
-      const TimestampNs stamp = start_ns + FromSeconds(sample.t_s);
-      writer.WriteMessage(topics::kImu, stamp, MakeImu(stamp, sample, tilt_sigma_rad));
-    }
-    for (; scan < scans && simulation.ScanTime(scan) <= t + 1e-9; ++scan) {
-      const LaserScan laser = simulation.Scan(scan);
-      const TimestampNs stamp = start_ns + laser.stamp_ns;
-      writer.WriteMessage(topics::kScan, stamp, MakeScan(stamp, laser));
-      if (scan % 50 == 0) ReportProgress(progress, {"simulating", scan, scans});
-    }
-  }
-  result.simulate_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+  const auto clock_start = Clock::now();
+  RunRecorder(simulation, writer, truth_dir, options, progress).Run(result);
   writer.Close();
-  ReportProgress(progress, {"simulating", scans, scans});
-  const sim::GroundTruthResult truth =
-      sim::WriteGroundTruth(truth_dir, simulation, spec.start_time_s);
+  result.simulate_s = SecondsSince(clock_start);
+  if (!truth_dir.empty()) sim::WriteGroundTruth(truth_dir, simulation, spec.start_time_s);
   guard.Commit();
 
-  const sim::World& world = simulation.world();
-  result.scans = scan;
-  result.odometry = states.size();
-  result.imu = imu;
   result.duration_s = simulation.duration_s();
   result.distance_m = simulation.drive().distance_m;
   result.route_completed = simulation.drive().reached_goal;
-  result.litter = truth.litter;
-  result.natural = truth.natural;
+  const sim::World& world = simulation.world();
+  result.litter = world.Count(sim::ObjectKind::kLitter);
+  result.natural = world.Count(sim::ObjectKind::kNatural);
   result.objects = world.objects.size();
   result.seed = spec.seed;
   result.laser = spec.robot.laser.preset;

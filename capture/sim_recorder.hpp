@@ -1,9 +1,12 @@
 #pragma once
 // Records a simulated survey run (sim/) into a run bag exactly like a real capture: /scan
 // LaserScan, /odom Odometry (drifting wheel odometry, starting at the odom origin), /imu Imu
-// (noisy roll/pitch, for tilt detection), /tf_static TFMessage (base_link -> laser and
-// base_link -> camera_color_optical_frame, latched), and writes the ground truth beside it
-// (sim/ground_truth.hpp). The RGB-D images follow in a later version.
+// (noisy roll/pitch, for tilt detection), the RGB-D camera as the TUM importer writes it
+// (/camera/color/image_raw/compressed JPEG, /camera/depth/image_raw/compressed 16-bit PNG in mm,
+// /camera/color/camera_info and /camera/depth/camera_info, frame camera_color_optical_frame,
+// depth registered to colour), and /tf_static TFMessage (base_link -> laser and base_link ->
+// camera_color_optical_frame, latched). The ground truth goes beside it (sim/ground_truth.hpp,
+// sim/instance_masks.hpp). Same spec and seed: same decoded bag content.
 
 #include <cstdint>
 #include <filesystem>
@@ -21,12 +24,15 @@ struct SimRecordOptions {
   std::optional<std::uint64_t> seed;  // overrides the world's seed
   double max_duration_s = std::numeric_limits<double>::infinity();
   BagWriterOptions bag;
+  int png_compression = 1;  // zlib level of the depth PNGs (capture/image_codec.hpp)
 };
 
 struct SimRecordResult {
   std::uint64_t scans = 0;
   std::uint64_t odometry = 0;
   std::uint64_t imu = 0;
+  std::uint64_t frames = 0;  // RGB-D frames (colour + depth + two CameraInfo each)
+  std::uint64_t masks = 0;   // instance masks written to TRUTH_DIR/masks
   double duration_s = 0;
   double distance_m = 0;
   bool route_completed = false;  // false when max_duration_s cut it short
@@ -35,11 +41,13 @@ struct SimRecordResult {
   std::uint64_t objects = 0;  // every primitive in the world
   std::uint64_t seed = 0;
   std::string laser;      // preset name
-  double simulate_s = 0;  // wall time spent ray casting and writing scans
+  double simulate_s = 0;  // wall time spent simulating, encoding and writing the messages
+  double render_s = 0;    // of which rendering the RGB-D frames
 };
 
-// Throws BadInputError for a bad world spec, UsageError when the bag directory is not empty,
-// InternalError on write failures; on error nothing it created is left behind.
+// Writes the bag, and the ground truth into truth_dir unless it is empty. Throws BadInputError
+// for a bad world spec, UsageError when the bag directory is not empty, InternalError on write
+// failures; on error nothing it created is left behind. Reports progress in camera frames.
 SimRecordResult RecordSimulation(const sim::WorldSpec& spec, const std::filesystem::path& bag_path,
                                  const std::filesystem::path& truth_dir,
                                  const SimRecordOptions& options = {},

@@ -9,6 +9,9 @@ inline constexpr const char* kOdometry = "/odom";                              /
 inline constexpr const char* kColor = "/camera/color/image_raw/compressed";    // JPEG
 inline constexpr const char* kDepth = "/camera/depth/image_raw/compressed";    // 16-bit PNG, mm
 inline constexpr const char* kCameraInfo = "/camera/color/camera_info";        // CameraInfo
+// Depth is registered to colour (same optical frame and intrinsics), as the Kinect drivers'
+// depth_registered output; its CameraInfo repeats the colour one on the depth stamps.
+inline constexpr const char* kDepthCameraInfo = "/camera/depth/camera_info";   // CameraInfo
 inline constexpr const char* kImu = "/imu";                                    // Imu
 inline constexpr const char* kGps = "/gps/fix";                                // NavSatFix
 inline constexpr const char* kTfStatic = "/tf_static";                         // TFMessage

@@ -32,6 +32,7 @@ class CliContext {
 void RegisterInfoCommand(CLI::App& app, CliContext& context);
 void RegisterImportCommands(CLI::App& app, CliContext& context);
 void RegisterSimulateCommand(CLI::App& app, CliContext& context);
+void RegisterCaptureCommand(CLI::App& app, CliContext& context);
 void RegisterPendingCommands(CLI::App& app, CliContext& context);
 void RegisterReconstructCommand(CLI::App& app, CliContext& context);
 void RegisterEvalCommands(CLI::App& app, CliContext& context);

@@ -18,7 +18,6 @@ struct PendingCommand {
 
 const std::vector<PendingCommand>& Pending() {
   static const std::vector<PendingCommand> commands = {
-      {"capture", "Record a run from the robot's sensors (not available yet)"},
       {"detect", "Detect and classify litter in a run's RGB-D frames (not available yet)"},
       {"train", "Train the litter classifier from labelled samples (not available yet)"},
       {"site", "Create and manage site databases (not available yet)"},

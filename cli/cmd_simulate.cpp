@@ -1,74 +1,73 @@
 // littermap simulate WORLD.yaml -o BAG --truth TRUTH_DIR [--seed N] [--duration S]
+//                   [--contact-sheet FILE.png]
 // A survey run in a procedural park: a run bag like a real capture plus its ground truth.
 
-#include <cstdint>
 #include <cstdio>
 #include <memory>
-#include <optional>
-#include <string>
 
+#include "capture/contact_sheet.hpp"
 #include "capture/sim_recorder.hpp"
-#include "cli/cli_context.hpp"
+#include "cli/simulate_run.hpp"
 #include "core/error.hpp"
 #include "sim/world_spec.hpp"
 
 namespace littermap::cli {
-namespace {
 
-struct SimulateArguments {
-  std::string world;
-  std::string bag;
-  std::string truth;
-  std::optional<std::uint64_t> seed;
-  std::optional<double> duration_s;
-};
-
-void RunSimulate(const SimulateArguments& arguments, CliContext& context) {
-  const sim::WorldSpec spec = sim::LoadWorldSpec(arguments.world);
+void RunSimulate(const SimulateRequest& request, CliContext& context) {
+  const sim::WorldSpec spec = sim::LoadWorldSpec(request.world);
   SimRecordOptions options;
-  options.seed = arguments.seed;
-  if (arguments.duration_s) {
-    if (!(*arguments.duration_s > 0)) throw UsageError("--duration: must be positive");
-    options.max_duration_s = *arguments.duration_s;
+  options.seed = request.seed;
+  if (request.duration_s) {
+    if (!(*request.duration_s > 0)) throw UsageError("--duration: must be positive");
+    options.max_duration_s = *request.duration_s;
   }
   const SimRecordResult result =
-      RecordSimulation(spec, arguments.bag, arguments.truth, options, context.Progress());
+      RecordSimulation(spec, request.bag, request.truth, options, context.Progress());
   context.FinishProgress();
   std::printf(
-      "wrote %s: %llu scans (%s), %llu odometry, %llu imu, %.1f s, %.1f m%s (seed %llu, %.0f "
-      "scans/s)\n",
-      arguments.bag.c_str(), static_cast<unsigned long long>(result.scans), result.laser.c_str(),
+      "wrote %s: %llu scans (%s), %llu odometry, %llu imu, %llu rgb-d frames, %.1f s, %.1f m%s "
+      "(seed %llu, %.1f frames/s)\n",
+      request.bag.c_str(), static_cast<unsigned long long>(result.scans), result.laser.c_str(),
       static_cast<unsigned long long>(result.odometry), static_cast<unsigned long long>(result.imu),
-      result.duration_s, result.distance_m, result.route_completed ? "" : " (route cut short)",
+      static_cast<unsigned long long>(result.frames), result.duration_s, result.distance_m,
+      result.route_completed ? "" : " (route cut short)",
       static_cast<unsigned long long>(result.seed),
-      result.simulate_s > 0 ? static_cast<double>(result.scans) / result.simulate_s : 0.0);
-  std::printf("wrote %s: %llu litter, %llu natural look-alikes, %llu primitives\n",
-              arguments.truth.c_str(), static_cast<unsigned long long>(result.litter),
-              static_cast<unsigned long long>(result.natural),
-              static_cast<unsigned long long>(result.objects));
+      result.simulate_s > 0 ? static_cast<double>(result.frames) / result.simulate_s : 0.0);
+  if (!request.truth.empty()) {
+    std::printf("wrote %s: %llu litter, %llu natural look-alikes, %llu primitives, %llu masks\n",
+                request.truth.c_str(), static_cast<unsigned long long>(result.litter),
+                static_cast<unsigned long long>(result.natural),
+                static_cast<unsigned long long>(result.objects),
+                static_cast<unsigned long long>(result.masks));
+  }
+  if (!request.contact_sheet.empty()) {
+    const ContactSheetResult sheet = WriteContactSheet(request.bag, request.contact_sheet);
+    std::printf("wrote %s: %d frames (colour | depth | laser), %dx%d px\n",
+                request.contact_sheet.c_str(), sheet.rows, sheet.width_px, sheet.height_px);
+  }
 }
 
-}  // namespace
-
 void RegisterSimulateCommand(CLI::App& app, CliContext& context) {
-  auto arguments = std::make_shared<SimulateArguments>();
+  auto request = std::make_shared<SimulateRequest>();
   CLI::App* simulate = context.AddCommand(
       app, "simulate",
-      "Simulate a survey run in a procedural park: a run bag (/scan, /odom, /imu, /tf_static) "
-      "and its ground truth");
-  simulate->add_option("WORLD", arguments->world, "World description (YAML)")
+      "Simulate a survey run in a procedural park: a run bag (/scan, /odom, /imu, RGB-D camera, "
+      "/tf_static) and its ground truth");
+  simulate->add_option("WORLD", request->world, "World description (YAML)")
       ->required()
       ->check(CLI::ExistingFile);
-  simulate->add_option("-o,--output", arguments->bag, "Bag directory to create")->required();
+  simulate->add_option("-o,--output", request->bag, "Bag directory to create")->required();
   simulate
-      ->add_option("--truth", arguments->truth,
-                   "Directory for trajectory.tum, litter.csv, natural.csv, world.json")
+      ->add_option("--truth", request->truth,
+                   "Directory for trajectory.tum, litter.csv, natural.csv, world.json, masks/")
       ->required();
-  simulate->add_option("--seed", arguments->seed, "Random seed (overrides the world's seed)");
-  simulate->add_option("--duration", arguments->duration_s,
+  simulate->add_option("--seed", request->seed, "Random seed (overrides the world's seed)");
+  simulate->add_option("--duration", request->duration_s,
                        "Stop after this many seconds of the route");
-  simulate->callback([arguments, &context] {
-    context.run = [arguments, &context] { RunSimulate(*arguments, context); };
+  simulate->add_option("--contact-sheet", request->contact_sheet,
+                       "Also write a PNG of sampled colour, depth and laser frames of the bag");
+  simulate->callback([request, &context] {
+    context.run = [request, &context] { RunSimulate(*request, context); };
   });
 }
 

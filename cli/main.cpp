@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   littermap::cli::RegisterInfoCommand(app, context);
   littermap::cli::RegisterImportCommands(app, context);
   littermap::cli::RegisterSimulateCommand(app, context);
+  littermap::cli::RegisterCaptureCommand(app, context);
   littermap::cli::RegisterReconstructCommand(app, context);
   littermap::cli::RegisterEvalCommands(app, context);
   littermap::cli::RegisterPendingCommands(app, context);

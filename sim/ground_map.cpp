@@ -13,6 +13,7 @@ constexpr double kShadowMarginM = 10;    // shadows fall outside the park too
 constexpr double kMaxCells = 4e6;        // caps memory for very large parks
 constexpr float kLeafOcclusion = 0.75f;  // a crown passes a quarter of the sun
 constexpr float kSolidOcclusion = 0.95f;
+constexpr std::uint8_t kBorderCell = 0x80;  // flag in types_: a neighbour has another type
 
 bool Inside(Shape shape, const Eigen::Vector3d& q) {  // q in units of the half-extents
   switch (shape) {
@@ -41,6 +42,7 @@ GroundMap::GroundMap(const World& world, const Eigen::Vector3d& sun_direction_wo
           world.terrain.GroundAt(RaggedGroundPoint(float(p.x()), float(p.y())).cast<double>()));
     }
   }
+  MarkBorders();
   origin_x_m_ = static_cast<float>(-kShadowMarginM);
   origin_y_m_ = static_cast<float>(-kShadowMarginM);
   const double wx = sx + 2 * kShadowMarginM, wy = sy + 2 * kShadowMarginM;
@@ -121,11 +123,46 @@ void GroundMap::Stamp(const Eigen::Vector2d& centre_m, double radius_m, float oc
   }
 }
 
-GroundType GroundMap::TypeAt(float x, float y) const {
+std::uint8_t GroundMap::Cell(float x, float y) const {
   const int c = FastFloor(x / type_cell_m_);
   const int r = FastFloor(y / type_cell_m_);
-  if (c < 0 || r < 0 || c >= type_cols_ || r >= type_rows_) return GroundType::kGrass;
-  return static_cast<GroundType>(types_[static_cast<std::size_t>(r * type_cols_ + c)]);
+  if (c < 0 || r < 0 || c >= type_cols_ || r >= type_rows_) {
+    return static_cast<std::uint8_t>(GroundType::kGrass);
+  }
+  return types_[static_cast<std::size_t>(r * type_cols_ + c)];
+}
+
+void GroundMap::MarkBorders() {
+  std::vector<std::uint8_t> marked = types_;
+  for (int r = 0; r < type_rows_; ++r) {
+    for (int c = 0; c < type_cols_; ++c) {
+      const std::uint8_t type = types_[static_cast<std::size_t>(r * type_cols_ + c)];
+      for (int dr = -1; dr <= 1; ++dr) {
+        for (int dc = -1; dc <= 1; ++dc) {
+          const int rr = std::clamp(r + dr, 0, type_rows_ - 1);
+          const int cc = std::clamp(c + dc, 0, type_cols_ - 1);
+          if (types_[static_cast<std::size_t>(rr * type_cols_ + cc)] != type) {
+            marked[static_cast<std::size_t>(r * type_cols_ + c)] |= kBorderCell;
+          }
+        }
+      }
+    }
+  }
+  types_ = std::move(marked);
+}
+
+GroundType GroundMap::TypeAt(float x, float y) const {
+  std::uint8_t cell = Cell(x, y);
+  if (cell & kBorderCell) {
+    // Near a region border a sub-cell wobble of the look-up (±0.6 cells) hides the cells, which
+    // would show as stair steps close to the camera. Interior cells, nearly all, skip the noise;
+    // the wobble stays within the 8 neighbours that made the cell a border cell.
+    const float frequency = 1 / (0.7f * type_cell_m_), amplitude = 1.2f * type_cell_m_;
+    const float wx = amplitude * (ValueNoise(x * frequency, y * frequency, 61) - 0.5f);
+    const float wy = amplitude * (ValueNoise(x * frequency, y * frequency, 62) - 0.5f);
+    cell = Cell(x + wx, y + wy);
+  }
+  return static_cast<GroundType>(cell & ~kBorderCell);
 }
 
 float GroundMap::SunlightAt(float x, float y) const {

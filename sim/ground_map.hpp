@@ -19,7 +19,8 @@ class GroundMap {
   // sun_direction_world points towards the sun (unit, z > 0).
   GroundMap(const World& world, const Eigen::Vector3d& sun_direction_world);
 
-  // The ground type at (x, y); grass outside the park.
+  // The ground type at (x, y); grass outside the park. Region borders are ragged at metre and
+  // decimetre scale (RaggedGroundPoint) and wobble at the scale of the cells.
   GroundType TypeAt(float x, float y) const;
   // Share of direct sun reaching the ground at (x, y): 1 in full sun, ~0.05 behind an opaque
   // object, dappled 0.1..0.4 under a tree crown, times the cloud shade. Bilinear, so shadow
@@ -27,6 +28,8 @@ class GroundMap {
   float SunlightAt(float x, float y) const;
 
  private:
+  std::uint8_t Cell(float x, float y) const;  // types_ entry, flag included
+  void MarkBorders();
   void BakeSunlight();
   void CastShadow(const World& world, const WorldObject& object, const Eigen::Vector3d& sun);
   void Stamp(const Eigen::Vector2d& centre_m, double radius_m, float occlusion);

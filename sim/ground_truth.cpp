@@ -121,6 +121,16 @@ json WorldJson(const Simulation& simulation) {
           {"bumps", bumps},
           {"T_base_laser", Pose(simulation.T_base_laser())},
           {"T_base_camera_body", Pose(simulation.T_base_camera())},
+          {"T_base_camera_optical", Pose(simulation.T_base_optical())},
+          {"camera",
+           {{"rate_hz", world.spec.robot.camera.rate_hz},
+            {"clock_offset_ms", world.spec.robot.camera.clock_offset_ms},
+            {"jitter_sigma_ms", world.spec.robot.camera.jitter_sigma_ms},
+            {"frames", simulation.camera_frame_count()}}},
+          {"instance_masks",
+           {{"every_n_frames", world.spec.truth.mask_every_n_frames},
+            {"index", "masks/index.csv (frame,stamp_ns,file)"},
+            {"values", "16-bit PNG: 0 ground, 65535 sky, otherwise object id + 1"}}},
           {"duration_s", simulation.duration_s()},
           {"distance_m", simulation.drive().distance_m}};
 }

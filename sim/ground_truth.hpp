@@ -3,7 +3,9 @@
 //   trajectory.tum  true base_link pose in the world, one per odometry step (TUM: t x y z q)
 //   litter.csv      id,class,x,y,z,size_m of every litter item (world frame, metres)
 //   natural.csv     the same for the natural look-alikes (flowers, leaves, stones, ...)
-//   world.json      everything: terrain, every primitive, route, bumps, sensor mounts
+//   world.json      everything: terrain, every primitive, route, bumps, sensor mounts, camera
+//   masks/          instance masks of every n-th camera frame (sim/instance_masks.hpp; written
+//                   while recording, by the recorder)
 
 #include <filesystem>
 

@@ -1,9 +1,11 @@
 #include "sim/simulation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "core/error.hpp"
+#include "sim/camera_model.hpp"
 #include "sim/odometry_model.hpp"
 #include "sim/random.hpp"
 
@@ -12,6 +14,20 @@ namespace {
 
 constexpr double kDegToRad = std::numbers::pi / 180;
 constexpr double kGravityMps2 = 9.81;
+
+// Exposure times of the camera frames: offset + k / rate + jitter clipped to ±3σ (CameraSpec).
+std::vector<double> CameraTimes(const CameraSpec& camera, double duration_s, std::uint64_t seed) {
+  std::vector<double> times;
+  const double offset_s = camera.clock_offset_ms / 1000, sigma_s = camera.jitter_sigma_ms / 1000;
+  for (std::size_t k = 0;; ++k) {
+    const double nominal = offset_s + static_cast<double>(k) / camera.rate_hz;
+    if (nominal > duration_s + 1e-9) break;
+    Rng rng(seed, 3'000'000 + k);
+    const double jitter = sigma_s * std::clamp(rng.Normal(), -3.0, 3.0);
+    times.push_back(std::clamp(nominal + jitter, 0.0, duration_s));
+  }
+  return times;
+}
 
 }  // namespace
 
@@ -24,7 +40,7 @@ Eigen::Isometry3d MountPose(const MountSpec& mount) {
 Simulation::Simulation(const WorldSpec& spec, const SimulationOptions& options)
     : world_(std::make_unique<World>(GenerateWorld(spec))),
       T_base_laser_(MountPose(spec.robot.laser.mount)),
-      T_base_camera_(MountPose(spec.robot.camera_mount)),
+      T_base_camera_(MountPose(spec.robot.camera.mount)),
       scan_rate_hz_(spec.robot.laser.rate_hz) {
   if (world_->route_m.size() < 2) {
     throw BadInputError(spec.source.string() + ": route: needs at least two waypoints");
@@ -45,6 +61,13 @@ Simulation::Simulation(const WorldSpec& spec, const SimulationOptions& options)
   laser.mixed_pixel_probability = spec.robot.laser.mixed_pixel_probability;
   laser.dropout_probability = spec.robot.laser.dropout_probability;
   laser_ = std::make_unique<LaserSimulator>(*world_, laser);
+  camera_times_s_ = CameraTimes(spec.robot.camera, duration_s(), spec.seed);
+}
+
+Eigen::Isometry3d Simulation::T_base_optical() const { return T_base_camera_ * T_body_optical(); }
+
+Eigen::Isometry3d Simulation::TrueOpticalPose(double t_s) const {
+  return TrueBasePose(t_s) * T_base_optical();
 }
 
 Eigen::Isometry3d Simulation::TrueBasePose(double t_s, RollPitchYaw* rpy) const {

@@ -51,8 +51,16 @@ class Simulation {
   std::size_t imu_count() const;
   ImuSample Imu(std::size_t k) const;
 
+  // RGB-D frames: exposure times with the camera's clock offset and jitter (CameraSpec),
+  // increasing, within [0, duration_s()].
+  std::size_t camera_frame_count() const { return camera_times_s_.size(); }
+  double CameraFrameTime(std::size_t k) const { return camera_times_s_[k]; }
+  // The true pose of the camera's optical frame at t_s.
+  Eigen::Isometry3d TrueOpticalPose(double t_s) const;
+
   const Eigen::Isometry3d& T_base_laser() const { return T_base_laser_; }
   const Eigen::Isometry3d& T_base_camera() const { return T_base_camera_; }  // camera body
+  Eigen::Isometry3d T_base_optical() const;  // camera optical frame (z forward, y down)
 
  private:
   std::unique_ptr<World> world_;  // stable address: the laser simulator refers to it
@@ -62,6 +70,7 @@ class Simulation {
   Eigen::Isometry3d T_base_laser_;
   Eigen::Isometry3d T_base_camera_;
   double scan_rate_hz_ = 10;
+  std::vector<double> camera_times_s_;
 };
 
 Eigen::Isometry3d MountPose(const MountSpec& mount);

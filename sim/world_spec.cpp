@@ -79,6 +79,31 @@ void ReadMount(YamlFields fields, MountSpec& mount) {
   fields.Finish();
 }
 
+void ReadCamera(YamlFields fields, CameraSpec& camera) {
+  fields.Read("rate_hz", camera.rate_hz);
+  fields.Read("clock_offset_ms", camera.clock_offset_ms);
+  fields.Read("jitter_sigma_ms", camera.jitter_sigma_ms);
+  fields.Read("jpeg_quality", camera.jpeg_quality);
+  ReadMount(fields.Child("mount"), camera.mount);
+  Check(fields, "rate_hz", camera.rate_hz >= 1 && camera.rate_hz <= 60, "must be in [1, 60]");
+  const double period_ms = 1000 / camera.rate_hz;
+  Check(fields, "clock_offset_ms",
+        camera.clock_offset_ms >= 0 && camera.clock_offset_ms < period_ms,
+        "must be in [0, 1000 / rate_hz)");
+  // 3σ below a sixth of the period keeps the frames in order and apart.
+  Check(fields, "jitter_sigma_ms",
+        camera.jitter_sigma_ms >= 0 && camera.jitter_sigma_ms * 18 <= period_ms,
+        "must be in [0, 1000 / rate_hz / 18]");
+  Check(fields, "jpeg_quality", camera.jpeg_quality >= 1 && camera.jpeg_quality <= 100,
+        "must be in [1, 100]");
+  fields.Finish();
+}
+
+void ReadTruth(YamlFields fields, TruthSpec& truth) {
+  fields.Read("mask_every_n_frames", truth.mask_every_n_frames);  // 0: no masks
+  fields.Finish();
+}
+
 void ReadRobot(YamlFields fields, RobotSpec& robot) {
   YamlFields laser = fields.Child("laser");
   laser.Read("preset", robot.laser.preset);
@@ -92,7 +117,7 @@ void ReadRobot(YamlFields fields, RobotSpec& robot) {
   Check(laser, "rate_hz", robot.laser.rate_hz >= 1 && robot.laser.rate_hz <= 100,
         "must be in [1, 100]");
   laser.Finish();
-  ReadMount(fields.Child("camera_mount"), robot.camera_mount);
+  ReadCamera(fields.Child("camera"), robot.camera);
   YamlFields odometry = fields.Child("odometry");
   odometry.Read("rate_hz", robot.odometry.rate_hz);
   odometry.Read("scale_error", robot.odometry.scale_error);
@@ -176,6 +201,7 @@ WorldSpec ParseWorldSpec(const std::string& yaml_text, const std::filesystem::pa
   ReadRobot(fields.Child("robot"), spec.robot);
   ReadRoute(fields.Child("route"), spec.route);
   ReadBumps(fields, spec.bumps);
+  ReadTruth(fields.Child("truth"), spec.truth);
   fields.Finish();
   return spec;
 }

@@ -78,6 +78,19 @@ struct LaserSpec {
   MountSpec mount{0.15, 0, 0.3, 0, 0, 0};
 };
 
+// The Kinect-like RGB-D camera (sim/rgbd_camera.hpp: 640x480, fx = fy = 525). Its clock is not
+// synchronised with the laser's: frame k is exposed at clock_offset_ms + k / rate_hz + j_k with
+// per-frame jitter j_k ~ N(0, jitter_sigma_ms) clipped to ±3σ (USB transfer and driver
+// scheduling), and stamped with that exposure time; laser, odometry and IMU tick exactly on
+// their periods from t = 0.
+struct CameraSpec {
+  double rate_hz = 10;  // 5..30 on a Kinect
+  double clock_offset_ms = 13;
+  double jitter_sigma_ms = 2;
+  int jpeg_quality = 90;                   // colour JPEG, 1..100
+  MountSpec mount{0.2, 0, 0.5, 0, 25, 0};  // camera body (x forward), pitched 25° down
+};
+
 struct OdometrySpec {  // wheel odometry errors (sim/odometry_model.hpp)
   double rate_hz = 50;
   double scale_error = 0.01;          // systematic distance error (wheel radius)
@@ -93,7 +106,7 @@ struct ImuSpec {
 
 struct RobotSpec {
   LaserSpec laser;
-  MountSpec camera_mount{0.2, 0, 0.45, 0, 20, 0};  // camera body (x forward), pitched down
+  CameraSpec camera;
   OdometrySpec odometry;
   ImuSpec imu;
   double max_angular_speed_radps = 1.0;
@@ -113,6 +126,10 @@ struct BumpSpec {  // a root or bump on the route that tilts the robot
   double roll_deg = 0, pitch_deg = 0;
 };
 
+struct TruthSpec {               // ground truth beside the bag (sim/ground_truth.hpp)
+  int mask_every_n_frames = 10;  // instance mask of every n-th camera frame (from 0); 0: none
+};
+
 struct WorldSpec {
   std::filesystem::path source;  // the YAML file, for messages
   std::string name = "park";
@@ -126,6 +143,7 @@ struct WorldSpec {
   RobotSpec robot;
   RouteSpec route;
   std::vector<BumpSpec> bumps;
+  TruthSpec truth;
 };
 
 // Throws BadInputError naming the file and key on a malformed or unknown key, or an invalid

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -30,10 +31,11 @@ int CountLines(const std::filesystem::path& path) {
 TEST(SimulateCli, SampleWorldGivesBagAndTruth) {
   testing::TempDir dir;
   const auto result = RunLittermap("simulate " + Quote(kWorld) + " -o " + Quote(dir / "bag") +
-                                   " --truth " + Quote(dir / "truth") + " --duration 4 --seed 5");
+                                   " --truth " + Quote(dir / "truth") + " --duration 2 --seed 5");
   ASSERT_EQ(result.exit_code, 0) << result.output;
-  EXPECT_NE(result.output.find("41 scans (urg-04lx), 201 odometry, 201 imu, 4.0 s"),
-            std::string::npos)
+  EXPECT_NE(
+      result.output.find("21 scans (urg-04lx), 101 odometry, 101 imu, 20 rgb-d frames, 2.0 s"),
+      std::string::npos)
       << result.output;
   EXPECT_NE(result.output.find("(seed 5,"), std::string::npos) << result.output;
 
@@ -45,18 +47,74 @@ TEST(SimulateCli, SampleWorldGivesBagAndTruth) {
     topics[topic.at("name").get<std::string>()] = {topic.at("type").get<std::string>(),
                                                    topic.at("message_count").get<int>()};
   }
-  EXPECT_EQ(topics["/scan"], std::make_pair(std::string("sensor_msgs/msg/LaserScan"), 41));
-  EXPECT_EQ(topics["/odom"], std::make_pair(std::string("nav_msgs/msg/Odometry"), 201));
-  EXPECT_EQ(topics["/imu"], std::make_pair(std::string("sensor_msgs/msg/Imu"), 201));
+  EXPECT_EQ(topics["/scan"], std::make_pair(std::string("sensor_msgs/msg/LaserScan"), 21));
+  EXPECT_EQ(topics["/odom"], std::make_pair(std::string("nav_msgs/msg/Odometry"), 101));
+  EXPECT_EQ(topics["/imu"], std::make_pair(std::string("sensor_msgs/msg/Imu"), 101));
   EXPECT_EQ(topics["/tf_static"], std::make_pair(std::string("tf2_msgs/msg/TFMessage"), 1));
+  const std::string image = "sensor_msgs/msg/CompressedImage";
+  const std::string camera_info = "sensor_msgs/msg/CameraInfo";
+  EXPECT_EQ(topics["/camera/color/image_raw/compressed"], std::make_pair(image, 20));
+  EXPECT_EQ(topics["/camera/depth/image_raw/compressed"], std::make_pair(image, 20));
+  EXPECT_EQ(topics["/camera/color/camera_info"], std::make_pair(camera_info, 20));
+  EXPECT_EQ(topics["/camera/depth/camera_info"], std::make_pair(camera_info, 20));
 
-  EXPECT_EQ(CountLines(dir / "truth" / "trajectory.tum"), 1 + 201);
+  EXPECT_EQ(CountLines(dir / "truth" / "trajectory.tum"), 1 + 101);
   EXPECT_EQ(CountLines(dir / "truth" / "litter.csv"), 1 + 60);
   EXPECT_EQ(CountLines(dir / "truth" / "natural.csv"), 1 + 80);
   std::ifstream world_file(dir / "truth" / "world.json");
   const auto world = nlohmann::json::parse(world_file);
   EXPECT_EQ(world.at("seed"), 5);
   EXPECT_GT(world.at("objects").size(), 140u);
+  EXPECT_EQ(CountLines(dir / "truth" / "masks" / "index.csv"), 1 + 2);  // frames 0 and 10
+  EXPECT_TRUE(std::filesystem::exists(dir / "truth" / "masks" / "frame_000010.png"));
+}
+
+// `capture` with simulator sources is `simulate`: the same bag for the same world and seed.
+TEST(SimulateCli, CaptureFromSimSourcesIsSimulate) {
+  testing::TempDir dir;
+  const std::string sim = "sim:" + kWorld.string();
+  const auto result =
+      RunLittermap("capture --camera '" + sim + "' --laser '" + sim + "' -o " + Quote(dir / "bag") +
+                   " --duration 1 --seed 5 " + "--contact-sheet " + Quote(dir / "sheet.png"));
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("11 scans (urg-04lx), 51 odometry, 51 imu, 10 rgb-d frames"),
+            std::string::npos)
+      << result.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "truth"));  // no --truth: the bag only
+  // The contact sheet: 6 rows of three 320x240 panels.
+  const auto info = RunLittermap("info --verify " + Quote(dir / "bag"));
+  EXPECT_EQ(info.exit_code, 0) << info.output;
+  std::ifstream png(dir / "sheet.png", std::ios::binary);
+  std::string header(24, '\0');
+  png.read(header.data(), 24);
+  ASSERT_EQ(header.substr(1, 3), "PNG");
+  const auto be32 = [&](int at) {
+    return (std::uint8_t(header[at]) << 24) | (std::uint8_t(header[at + 1]) << 16) |
+           (std::uint8_t(header[at + 2]) << 8) | std::uint8_t(header[at + 3]);
+  };
+  EXPECT_EQ(be32(16), 960);
+  EXPECT_EQ(be32(20), 6 * 240);
+}
+
+TEST(SimulateCli, CaptureFromRealSensorsNamesTheSource) {
+  testing::TempDir dir;
+  const std::string sim = "sim:" + kWorld.string();
+  const auto real =
+      RunLittermap("capture --camera openni2:// --laser '" + sim + "' -o " + Quote(dir / "bag"));
+  EXPECT_EQ(real.exit_code, 1) << real.output;
+  EXPECT_NE(real.output.find("--camera 'openni2://': this version captures only from the park "
+                             "simulator"),
+            std::string::npos)
+      << real.output;
+  const auto laser =
+      RunLittermap("capture --camera '" + sim + "' --laser /dev/ttyACM0 -o " + Quote(dir / "bag"));
+  EXPECT_EQ(laser.exit_code, 1) << laser.output;
+  EXPECT_NE(laser.output.find("--laser '/dev/ttyACM0'"), std::string::npos) << laser.output;
+  const auto mixed = RunLittermap("capture --camera '" + sim + "' --laser sim:other.yaml -o " +
+                                  Quote(dir / "bag"));
+  EXPECT_EQ(mixed.exit_code, 1) << mixed.output;
+  EXPECT_NE(mixed.output.find("must simulate the same world"), std::string::npos) << mixed.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "bag"));
 }
 
 TEST(SimulateCli, BadWorldExitsTwoNamingFileAndKey) {

@@ -32,6 +32,30 @@ TEST(WorldSpec, SamplesLoad) {
   EXPECT_EQ(large.route.type, "lawnmower");
   EXPECT_EQ(large.robot.laser.preset, "utm-30lx");
   EXPECT_DOUBLE_EQ(large.size_x_m, 150);
+  // The Kinect mount: about 0.5 m up, pitched about 25° down, 10 Hz.
+  EXPECT_DOUBLE_EQ(small.robot.camera.mount.z_m, 0.5);
+  EXPECT_DOUBLE_EQ(small.robot.camera.mount.pitch_deg, 25);
+  EXPECT_DOUBLE_EQ(small.robot.camera.rate_hz, 10);
+  EXPECT_EQ(small.truth.mask_every_n_frames, 10);
+}
+
+TEST(WorldSpec, CameraAndTruthSections) {
+  const WorldSpec spec = ParseWorldSpec(
+      std::string(kRoute) +
+      "robot: {camera: {rate_hz: 30, clock_offset_ms: 5, jitter_sigma_ms: 1, jpeg_quality: 80,"
+      " mount: {z_m: 0.6, pitch_deg: 30}}}\ntruth: {mask_every_n_frames: 0}\n");
+  EXPECT_DOUBLE_EQ(spec.robot.camera.rate_hz, 30);
+  EXPECT_DOUBLE_EQ(spec.robot.camera.clock_offset_ms, 5);
+  EXPECT_DOUBLE_EQ(spec.robot.camera.jitter_sigma_ms, 1);
+  EXPECT_EQ(spec.robot.camera.jpeg_quality, 80);
+  EXPECT_DOUBLE_EQ(spec.robot.camera.mount.z_m, 0.6);
+  EXPECT_EQ(spec.truth.mask_every_n_frames, 0);
+  EXPECT_EQ(ErrorOf(std::string(kRoute) + "robot: {camera: {rate_hz: 30, jitter_sigma_ms: 2}}\n"),
+            "w.yaml: robot.camera.jitter_sigma_ms: must be in [0, 1000 / rate_hz / 18]");
+  EXPECT_EQ(ErrorOf(std::string(kRoute) + "robot: {camera_mount: {z_m: 1}}\n"),
+            "w.yaml: robot.camera_mount: unknown key");
+  EXPECT_EQ(ErrorOf(std::string(kRoute) + "truth: {mask_every_n_frames: -1}\n"),
+            "w.yaml: truth.mask_every_n_frames: must not be negative");
 }
 
 TEST(WorldSpec, UnknownKeysNameFileAndKey) {

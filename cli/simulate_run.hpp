@@ -1,0 +1,24 @@
+#pragma once
+// The simulated run shared by `littermap simulate` and `littermap capture --camera sim:...`.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "cli/cli_context.hpp"
+
+namespace littermap::cli {
+
+struct SimulateRequest {
+  std::string world;
+  std::string bag;
+  std::string truth;          // empty: no ground truth
+  std::string contact_sheet;  // empty: none
+  std::optional<std::uint64_t> seed;
+  std::optional<double> duration_s;
+};
+
+// Records the run, prints what was written to stdout. Throws littermap errors.
+void RunSimulate(const SimulateRequest& request, CliContext& context);
+
+}  // namespace littermap::cli

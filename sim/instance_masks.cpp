@@ -1,0 +1,79 @@
+#include "sim/instance_masks.hpp"
+
+#include <cstdio>
+#include <map>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/error.hpp"
+
+namespace littermap::sim {
+namespace {
+
+std::ofstream OpenCsv(const std::filesystem::path& path, const char* header) {
+  std::ofstream out(path);
+  if (!out) throw InternalError(path.string() + ": cannot create file");
+  out << header << '\n';
+  return out;
+}
+
+void CloseCsv(std::ofstream& out, const std::filesystem::path& path) {
+  out.flush();
+  if (!out) throw InternalError(path.string() + ": write failed");
+  out.close();
+}
+
+}  // namespace
+
+cv::Mat InstanceIdsToMask(const cv::Mat& instance_ids) {
+  if (instance_ids.type() != CV_32SC1) throw InternalError("instance ids are not CV_32SC1");
+  cv::Mat mask(instance_ids.size(), CV_16UC1);
+  for (int row = 0; row < instance_ids.rows; ++row) {
+    const auto* in = instance_ids.ptr<std::int32_t>(row);
+    auto* out = mask.ptr<std::uint16_t>(row);
+    for (int col = 0; col < instance_ids.cols; ++col) {
+      const std::int32_t id = in[col];
+      if (id >= kMaskSky) throw InternalError("instance id does not fit a 16-bit mask");
+      out[col] = id < 0 ? kMaskSky : static_cast<std::uint16_t>(id);
+    }
+  }
+  return mask;
+}
+
+InstanceMaskWriter::InstanceMaskWriter(const std::filesystem::path& truth_dir)
+    : directory_(truth_dir / "masks") {
+  std::error_code error;
+  std::filesystem::create_directories(directory_, error);
+  if (error) throw InternalError(directory_.string() + ": cannot create: " + error.message());
+  index_ = OpenCsv(directory_ / "index.csv", "frame,stamp_ns,file");
+  visible_ = OpenCsv(directory_ / "visible.csv", "frame,object_id,pixels");
+}
+
+void InstanceMaskWriter::Write(std::size_t frame, TimestampNs stamp_ns,
+                               const cv::Mat& instance_ids) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%06zu.png", frame);
+  const std::filesystem::path path = directory_ / name;
+  const cv::Mat mask = InstanceIdsToMask(instance_ids);
+  std::map<std::uint16_t, std::size_t> pixels;
+  for (int row = 0; row < mask.rows; ++row) {
+    const auto* value = mask.ptr<std::uint16_t>(row);
+    for (int col = 0; col < mask.cols; ++col) {
+      if (value[col] != kMaskGround && value[col] != kMaskSky) ++pixels[value[col]];
+    }
+  }
+  for (const auto& [value, count] : pixels)
+    visible_ << frame << ',' << value - 1 << ',' << count << '\n';
+  if (!cv::imwrite(path.string(), mask, {cv::IMWRITE_PNG_COMPRESSION, 3})) {
+    throw InternalError(path.string() + ": cannot write mask");
+  }
+  index_ << frame << ',' << stamp_ns << ",masks/" << name << '\n';
+  ++written_;
+}
+
+void InstanceMaskWriter::Close() {
+  CloseCsv(index_, directory_ / "index.csv");
+  CloseCsv(visible_, directory_ / "visible.csv");
+}
+
+}  // namespace littermap::sim
