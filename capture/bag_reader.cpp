@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <map>
 
-#include "capture/sqlite_database.hpp"
+#include "core/sqlite_database.hpp"
 
 namespace littermap {
 namespace {

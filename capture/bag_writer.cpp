@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "capture/bag_schema.hpp"
-#include "capture/sqlite_database.hpp"
+#include "core/sqlite_database.hpp"
 
 namespace littermap {
 namespace {

@@ -36,5 +36,8 @@ void RegisterCaptureCommand(CLI::App& app, CliContext& context);
 void RegisterPendingCommands(CLI::App& app, CliContext& context);
 void RegisterReconstructCommand(CLI::App& app, CliContext& context);
 void RegisterEvalCommands(CLI::App& app, CliContext& context);
+void RegisterSiteCommands(CLI::App& app, CliContext& context);
+void RegisterIngestCommand(CLI::App& app, CliContext& context);
+void RegisterHeatmapCommand(CLI::App& app, CliContext& context);
 
 }  // namespace littermap::cli

@@ -37,6 +37,9 @@ int main(int argc, char** argv) {
   littermap::cli::RegisterCaptureCommand(app, context);
   littermap::cli::RegisterReconstructCommand(app, context);
   littermap::cli::RegisterEvalCommands(app, context);
+  littermap::cli::RegisterSiteCommands(app, context);
+  littermap::cli::RegisterIngestCommand(app, context);
+  littermap::cli::RegisterHeatmapCommand(app, context);
   littermap::cli::RegisterPendingCommands(app, context);
 
   try {

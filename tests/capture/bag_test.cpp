@@ -7,7 +7,7 @@
 
 #include "capture/bag_reader.hpp"
 #include "capture/bag_writer.hpp"
-#include "capture/sqlite_database.hpp"
+#include "core/sqlite_database.hpp"
 #include "support/temp_dir.hpp"
 
 namespace littermap {

@@ -1,4 +1,4 @@
-#include "capture/sqlite_database.hpp"
+#include "core/sqlite_database.hpp"
 
 #include <sqlite3.h>
 
@@ -29,6 +29,16 @@ SqliteStatement::~SqliteStatement() { sqlite3_finalize(statement_); }
 void SqliteStatement::Bind(int index, std::int64_t value) {
   const int code = sqlite3_bind_int64(statement_, index, value);
   if (code != SQLITE_OK) Fail(code, "binding an integer");
+}
+
+void SqliteStatement::BindReal(int index, double value) {
+  const int code = sqlite3_bind_double(statement_, index, value);
+  if (code != SQLITE_OK) Fail(code, "binding a real");
+}
+
+void SqliteStatement::BindNull(int index) {
+  const int code = sqlite3_bind_null(statement_, index);
+  if (code != SQLITE_OK) Fail(code, "binding null");
 }
 
 void SqliteStatement::Bind(int index, std::string_view text) {
@@ -65,6 +75,14 @@ void SqliteStatement::Reset() {
 
 std::int64_t SqliteStatement::ColumnInt64(int column) const {
   return sqlite3_column_int64(statement_, column);
+}
+
+double SqliteStatement::ColumnDouble(int column) const {
+  return sqlite3_column_double(statement_, column);
+}
+
+bool SqliteStatement::ColumnIsNull(int column) const {
+  return sqlite3_column_type(statement_, column) == SQLITE_NULL;
 }
 
 std::string SqliteStatement::ColumnText(int column) const {
@@ -110,6 +128,11 @@ SqliteDatabase::SqliteDatabase(const std::filesystem::path& file, Mode mode) : f
 }
 
 SqliteDatabase::~SqliteDatabase() { sqlite3_close(db_); }
+
+SqliteDatabase::SqliteDatabase(SqliteDatabase&& other) noexcept
+    : db_(other.db_), file_(std::move(other.file_)) {
+  other.db_ = nullptr;
+}
 
 void SqliteDatabase::Execute(std::string_view sql) {
   char* error = nullptr;

@@ -1,7 +1,7 @@
 #pragma once
-// A thin RAII layer over the SQLite C API for the run bag: one connection, prepared statements,
-// and errors that name the database file. SQLite failures throw SqliteError (an InternalError);
-// callers that know the file came from the user turn them into BadInputError.
+// A thin RAII layer over the SQLite C API (run bag, site database): one connection, prepared
+// statements, and errors that name the database file. SQLite failures throw SqliteError (an
+// InternalError); callers that know the file came from the user turn them into BadInputError.
 
 #include <cstdint>
 #include <filesystem>
@@ -36,6 +36,8 @@ class SqliteStatement {
 
   // Parameters are 1-based, as in SQLite.
   void Bind(int index, std::int64_t value);
+  void BindReal(int index, double value);
+  void BindNull(int index);
   void Bind(int index, std::string_view text);
   void BindBlob(int index, std::span<const std::uint8_t> blob);
 
@@ -46,6 +48,8 @@ class SqliteStatement {
   void Reset();
 
   std::int64_t ColumnInt64(int column) const;
+  double ColumnDouble(int column) const;
+  bool ColumnIsNull(int column) const;
   std::string ColumnText(int column) const;
   std::span<const std::uint8_t> ColumnBlob(int column) const;  // valid until the next Step
 
@@ -64,6 +68,8 @@ class SqliteDatabase {
   ~SqliteDatabase();
   SqliteDatabase(const SqliteDatabase&) = delete;
   SqliteDatabase& operator=(const SqliteDatabase&) = delete;
+  SqliteDatabase(SqliteDatabase&& other) noexcept;
+  SqliteDatabase& operator=(SqliteDatabase&&) = delete;
 
   void Execute(std::string_view sql);
   SqliteStatement Prepare(std::string_view sql) const;

@@ -1,0 +1,145 @@
+#pragma once
+// One site's database: an SQLite file that is also an OGC GeoPackage 1.4 (QGIS opens it as it
+// is). Feature tables litter_items, hotspots (POINT) and run_tracks (LINESTRING) hold geometry
+// in the site CRS; the tables sites, runs, detections and coverage are littermap's own.
+// Connections run with foreign keys on, WAL journaling and a busy timeout, so two processes
+// may write one site (one waits for the other's transaction).
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/sqlite_database.hpp"
+#include "db/geometry_blob.hpp"
+#include "db/site_frame.hpp"
+
+namespace littermap::db {
+
+struct SiteOptions {
+  std::string name;
+  std::optional<int> epsg_code;  // none: a local engineering frame
+  double origin_easting_m = 0.0;
+  double origin_northing_m = 0.0;
+  double rotation_deg = 0.0;
+};
+
+struct SiteInfo {
+  std::string name;
+  SiteFrame frame;
+  std::string created_utc;
+  int schema_version = 0;
+};
+
+struct RunRecord {
+  std::int64_t run_id = 0;
+  std::string name;
+  std::string source_digest;  // identifies the run's inputs: ingesting it twice is a no-op
+  double start_time_s = 0.0;
+  double end_time_s = 0.0;
+  double length_m = 0.0;
+};
+
+struct ItemRecord {
+  std::int64_t fid = 0;
+  std::string class_name;
+  PointXY site_xy;  // site frame, metres
+  double z_m = 0.0;
+  double size_m = 0.0;
+  double confidence = 1.0;
+  std::int64_t first_run_id = 0;
+  std::int64_t last_run_id = 0;
+  int times_seen = 1;
+};
+
+struct DetectionRecord {
+  std::int64_t run_id = 0;
+  std::optional<std::int64_t> item_fid;
+  std::string run_item_id;  // the item's id within its run (items.csv "id")
+  std::string class_name;
+  PointXY site_xy;
+  double z_m = 0.0;
+  double size_m = 0.0;
+  double confidence = 1.0;
+};
+
+// Which ground cells one run's camera observed, on a north-up grid in the site CRS.
+struct CoverageRecord {
+  std::int64_t run_id = 0;
+  double cell_size_m = 0.0;
+  double min_x_m = 0.0;  // western edge, site CRS
+  double max_y_m = 0.0;  // northern edge, site CRS
+  int width = 0;
+  int height = 0;
+  double observed_area_m2 = 0.0;
+  std::vector<std::uint8_t> observed;  // row-major, 1 = observed
+};
+
+struct HotspotRecord {
+  int rank = 0;
+  PointXY site_xy;
+  double density_per_100m2 = 0.0;
+  std::string dominant_class;
+};
+
+struct RunTrack {
+  std::int64_t run_id = 0;
+  std::vector<PointXY> site_points;  // site frame, metres
+};
+
+class SiteDatabase {
+ public:
+  // Throws UsageError when the file exists or the CRS is unusable; leaves no file behind.
+  static SiteDatabase Create(const std::filesystem::path& file, const SiteOptions& options);
+  // Throws BadInputError naming the file when it is not a littermap site GeoPackage; applies
+  // pending schema migrations.
+  static SiteDatabase Open(const std::filesystem::path& file);
+
+  const SiteInfo& site() const { return site_; }
+  SqliteDatabase& sql() { return database_; }
+
+  // BEGIN IMMEDIATE ... COMMIT; rolls back when `body` throws.
+  template <typename Body>
+  void InTransaction(Body&& body) {
+    database_.Execute("BEGIN IMMEDIATE");
+    try {
+      body();
+    } catch (...) {
+      database_.Execute("ROLLBACK");
+      throw;
+    }
+    database_.Execute("COMMIT");
+  }
+
+  std::optional<std::int64_t> FindRun(const std::string& source_digest);
+  std::int64_t AddRun(const RunRecord& run);
+  std::vector<RunRecord> Runs();
+  void AddRunTrack(std::int64_t run_id, std::span<const PointXY> site_points);
+  std::vector<RunTrack> RunTracks();
+  std::int64_t AddItem(const ItemRecord& item);
+  std::vector<ItemRecord> Items();
+  // The item was seen again by run_id: last_run_id and times_seen move on.
+  void MarkItemSeen(std::int64_t fid, std::int64_t run_id);
+  void AddDetection(const DetectionRecord& detection);
+  std::size_t DetectionCount(std::int64_t run_id);
+  // The detections of these runs, in run order.
+  std::vector<DetectionRecord> Detections(const std::vector<std::int64_t>& run_ids);
+  // The items detected by any of these runs.
+  std::vector<ItemRecord> ItemsSeenBy(const std::vector<std::int64_t>& run_ids);
+  void AddCoverage(const CoverageRecord& coverage);
+  std::vector<CoverageRecord> Coverages();
+  // Replaces the hotspots table's rows (they are recomputed from all runs each time).
+  void ReplaceHotspots(const std::vector<HotspotRecord>& hotspots);
+
+ private:
+  explicit SiteDatabase(const std::filesystem::path& file, SqliteDatabase::Mode mode);
+  void Configure();
+  void LoadSite();
+
+  SqliteDatabase database_;
+  SiteInfo site_;
+};
+
+}  // namespace littermap::db

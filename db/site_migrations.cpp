@@ -1,0 +1,147 @@
+#include "db/site_migrations.hpp"
+
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace littermap::db {
+namespace {
+
+struct Migration {
+  int version;
+  const char* description;
+  const char* sql;
+};
+
+// Version 1: the site, its runs and what they saw. Feature tables keep their geometry in the
+// site CRS (geom) and the robot's site-frame coordinates in plain columns, so neither needs a
+// transform to read back.
+constexpr const char* kVersion1 = R"sql(
+CREATE TABLE sites (
+  site_id INTEGER PRIMARY KEY CHECK (site_id = 1),
+  name TEXT NOT NULL,
+  srs_id INTEGER NOT NULL REFERENCES gpkg_spatial_ref_sys(srs_id),
+  epsg_code INTEGER NOT NULL,
+  origin_easting_m REAL NOT NULL,
+  origin_northing_m REAL NOT NULL,
+  rotation_deg REAL NOT NULL,
+  created_utc TEXT NOT NULL DEFAULT (strftime('%Y-%m-%dT%H:%M:%fZ','now'))
+);
+CREATE TABLE runs (
+  run_id INTEGER PRIMARY KEY AUTOINCREMENT,
+  site_id INTEGER NOT NULL REFERENCES sites(site_id),
+  name TEXT NOT NULL,
+  source_digest TEXT NOT NULL UNIQUE,
+  start_time_s REAL,
+  end_time_s REAL,
+  length_m REAL,
+  site_from_run_x_m REAL NOT NULL DEFAULT 0,
+  site_from_run_y_m REAL NOT NULL DEFAULT 0,
+  site_from_run_yaw_rad REAL NOT NULL DEFAULT 0,
+  registration_quality REAL,
+  ingested_utc TEXT NOT NULL DEFAULT (strftime('%Y-%m-%dT%H:%M:%fZ','now'))
+);
+CREATE TABLE run_tracks (
+  fid INTEGER PRIMARY KEY AUTOINCREMENT,
+  geom LINESTRING NOT NULL,
+  run_id INTEGER NOT NULL UNIQUE REFERENCES runs(run_id) ON DELETE CASCADE,
+  pose_count INTEGER NOT NULL,
+  length_m REAL NOT NULL
+);
+CREATE TABLE litter_items (
+  fid INTEGER PRIMARY KEY AUTOINCREMENT,
+  geom POINT NOT NULL,
+  class TEXT NOT NULL,
+  site_x_m REAL NOT NULL,
+  site_y_m REAL NOT NULL,
+  z_m REAL,
+  size_m REAL,
+  confidence REAL,
+  first_run_id INTEGER NOT NULL REFERENCES runs(run_id),
+  last_run_id INTEGER NOT NULL REFERENCES runs(run_id),
+  times_seen INTEGER NOT NULL DEFAULT 1
+);
+CREATE INDEX litter_items_first_run ON litter_items(first_run_id);
+CREATE INDEX litter_items_last_run ON litter_items(last_run_id);
+CREATE TABLE detections (
+  detection_id INTEGER PRIMARY KEY AUTOINCREMENT,
+  run_id INTEGER NOT NULL REFERENCES runs(run_id) ON DELETE CASCADE,
+  item_fid INTEGER REFERENCES litter_items(fid) ON DELETE SET NULL,
+  run_item_id TEXT NOT NULL,
+  class TEXT NOT NULL,
+  site_x_m REAL NOT NULL,
+  site_y_m REAL NOT NULL,
+  z_m REAL,
+  size_m REAL,
+  confidence REAL,
+  UNIQUE (run_id, run_item_id)
+);
+CREATE INDEX detections_item ON detections(item_fid);
+CREATE TABLE coverage (
+  run_id INTEGER PRIMARY KEY REFERENCES runs(run_id) ON DELETE CASCADE,
+  cell_size_m REAL NOT NULL,
+  origin_x_m REAL NOT NULL,
+  origin_y_m REAL NOT NULL,
+  width INTEGER NOT NULL,
+  height INTEGER NOT NULL,
+  observed_area_m2 REAL NOT NULL,
+  encoding TEXT NOT NULL,
+  data BLOB NOT NULL
+);
+CREATE TABLE hotspots (
+  fid INTEGER PRIMARY KEY AUTOINCREMENT,
+  geom POINT NOT NULL,
+  rank INTEGER NOT NULL,
+  site_x_m REAL NOT NULL,
+  site_y_m REAL NOT NULL,
+  density_per_100m2 REAL NOT NULL,
+  dominant_class TEXT,
+  computed_utc TEXT NOT NULL DEFAULT (strftime('%Y-%m-%dT%H:%M:%fZ','now'))
+);
+)sql";
+
+const std::vector<Migration>& Migrations() {
+  static const std::vector<Migration> migrations = {
+      {1, "sites, runs, run_tracks, litter_items, detections, coverage, hotspots", kVersion1},
+  };
+  return migrations;
+}
+
+}  // namespace
+
+int LatestSiteSchemaVersion() { return Migrations().back().version; }
+
+int SiteSchemaVersion(SqliteDatabase& database) {
+  if (!database.HasTable("littermap_schema_version")) return 0;
+  SqliteStatement query = database.Prepare("SELECT max(version) FROM littermap_schema_version");
+  return query.Step() ? static_cast<int>(query.ColumnInt64(0)) : 0;
+}
+
+MigrationResult MigrateSiteSchema(SqliteDatabase& database) {
+  database.Execute(
+      "CREATE TABLE IF NOT EXISTS littermap_schema_version (version INTEGER PRIMARY KEY, "
+      "description TEXT NOT NULL, applied_utc TEXT NOT NULL "
+      "DEFAULT (strftime('%Y-%m-%dT%H:%M:%fZ','now')))");
+  MigrationResult result;
+  result.from_version = SiteSchemaVersion(database);
+  result.to_version = result.from_version;
+  if (result.from_version > LatestSiteSchemaVersion()) {
+    throw BadInputError(database.file().string() + ": site schema version " +
+                        std::to_string(result.from_version) + " is newer than this littermap (" +
+                        std::to_string(LatestSiteSchemaVersion()) + "); update littermap");
+  }
+  for (const Migration& migration : Migrations()) {
+    if (migration.version <= result.from_version) continue;
+    database.Execute(migration.sql);
+    SqliteStatement record = database.Prepare(
+        "INSERT INTO littermap_schema_version (version, description) VALUES (?, ?)");
+    record.Bind(1, std::int64_t{migration.version});
+    record.Bind(2, migration.description);
+    record.Run();
+    result.to_version = migration.version;
+  }
+  return result;
+}
+
+}  // namespace littermap::db

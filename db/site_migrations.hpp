@@ -1,0 +1,24 @@
+#pragma once
+// littermap's own schema inside the GeoPackage, versioned in littermap_schema_version (the
+// GeoPackage owns PRAGMA user_version). Each migration is applied once, in order, in the
+// caller's transaction; a file from a newer littermap is refused rather than guessed at.
+
+#include "core/sqlite_database.hpp"
+
+namespace littermap::db {
+
+struct MigrationResult {
+  int from_version = 0;
+  int to_version = 0;
+  bool migrated() const { return to_version != from_version; }
+};
+
+int LatestSiteSchemaVersion();
+
+// 0 when the version table is missing (not a littermap site, or a fresh GeoPackage).
+int SiteSchemaVersion(SqliteDatabase& database);
+
+// Throws BadInputError naming the file when its schema is newer than this build knows.
+MigrationResult MigrateSiteSchema(SqliteDatabase& database);
+
+}  // namespace littermap::db

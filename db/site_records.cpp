@@ -1,0 +1,126 @@
+// SiteDatabase's typed access to runs, tracks and items (the schema is in site_migrations.cpp).
+
+#include <cmath>
+
+#include "core/error.hpp"
+#include "db/geopackage_schema.hpp"
+#include "db/site_database.hpp"
+
+namespace littermap::db {
+namespace {
+
+double PathLength(std::span<const PointXY> points) {
+  double length = 0.0;
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    length += std::hypot(points[i].x - points[i - 1].x, points[i].y - points[i - 1].y);
+  }
+  return length;
+}
+
+}  // namespace
+
+std::optional<std::int64_t> SiteDatabase::FindRun(const std::string& source_digest) {
+  SqliteStatement query = database_.Prepare("SELECT run_id FROM runs WHERE source_digest = ?");
+  query.Bind(1, source_digest);
+  if (!query.Step()) return std::nullopt;
+  return query.ColumnInt64(0);
+}
+
+std::int64_t SiteDatabase::AddRun(const RunRecord& run) {
+  SqliteStatement insert = database_.Prepare(
+      "INSERT INTO runs (site_id, name, source_digest, start_time_s, end_time_s, length_m) "
+      "VALUES (1, ?, ?, ?, ?, ?)");
+  insert.Bind(1, run.name);
+  insert.Bind(2, run.source_digest);
+  insert.BindReal(3, run.start_time_s);
+  insert.BindReal(4, run.end_time_s);
+  insert.BindReal(5, run.length_m);
+  insert.Run();
+  return database_.LastInsertId();
+}
+
+std::vector<RunRecord> SiteDatabase::Runs() {
+  SqliteStatement query = database_.Prepare(
+      "SELECT run_id, name, source_digest, start_time_s, end_time_s, length_m FROM runs "
+      "ORDER BY run_id");
+  std::vector<RunRecord> runs;
+  while (query.Step()) {
+    runs.push_back({query.ColumnInt64(0), query.ColumnText(1), query.ColumnText(2),
+                    query.ColumnDouble(3), query.ColumnDouble(4), query.ColumnDouble(5)});
+  }
+  return runs;
+}
+
+void SiteDatabase::AddRunTrack(std::int64_t run_id, std::span<const PointXY> site_points) {
+  std::vector<PointXY> crs_points;
+  crs_points.reserve(site_points.size());
+  for (const PointXY& p : site_points) crs_points.push_back(site_.frame.ToCrs(p));
+  const std::vector<std::uint8_t> blob = EncodeLineString(crs_points, site_.frame.srs_id);
+  SqliteStatement insert = database_.Prepare(
+      "INSERT INTO run_tracks (geom, run_id, pose_count, length_m) VALUES (?, ?, ?, ?)");
+  insert.BindBlob(1, blob);
+  insert.Bind(2, run_id);
+  insert.Bind(3, static_cast<std::int64_t>(site_points.size()));
+  insert.BindReal(4, PathLength(site_points));
+  insert.Run();
+  ExtendContentsBounds(database_, "run_tracks", EnvelopeOf(crs_points));
+}
+
+std::vector<RunTrack> SiteDatabase::RunTracks() {
+  SqliteStatement query =
+      database_.Prepare("SELECT fid, run_id, geom FROM run_tracks ORDER BY run_id");
+  std::vector<RunTrack> tracks;
+  while (query.Step()) {
+    const std::string where =
+        database_.file().string() + ": run_tracks fid " + std::to_string(query.ColumnInt64(0));
+    const GeometryBlob geometry = DecodeGeometry(query.ColumnBlob(2), where);
+    RunTrack track{query.ColumnInt64(1), {}};
+    for (const PointXY& p : geometry.points) track.site_points.push_back(site_.frame.FromCrs(p));
+    tracks.push_back(std::move(track));
+  }
+  return tracks;
+}
+
+std::int64_t SiteDatabase::AddItem(const ItemRecord& item) {
+  const PointXY crs = site_.frame.ToCrs(item.site_xy);
+  const std::vector<std::uint8_t> blob = EncodePoint(crs, site_.frame.srs_id);
+  SqliteStatement insert = database_.Prepare(
+      "INSERT INTO litter_items (geom, class, site_x_m, site_y_m, z_m, size_m, confidence, "
+      "first_run_id, last_run_id, times_seen) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  insert.BindBlob(1, blob);
+  insert.Bind(2, item.class_name);
+  insert.BindReal(3, item.site_xy.x);
+  insert.BindReal(4, item.site_xy.y);
+  insert.BindReal(5, item.z_m);
+  insert.BindReal(6, item.size_m);
+  insert.BindReal(7, item.confidence);
+  insert.Bind(8, item.first_run_id);
+  insert.Bind(9, item.last_run_id);
+  insert.Bind(10, std::int64_t{item.times_seen});
+  insert.Run();
+  ExtendContentsBounds(database_, "litter_items", {crs.x, crs.x, crs.y, crs.y});
+  return database_.LastInsertId();
+}
+
+std::vector<ItemRecord> SiteDatabase::Items() {
+  SqliteStatement query = database_.Prepare(
+      "SELECT fid, class, site_x_m, site_y_m, z_m, size_m, confidence, first_run_id, "
+      "last_run_id, times_seen FROM litter_items ORDER BY fid");
+  std::vector<ItemRecord> items;
+  while (query.Step()) {
+    ItemRecord item;
+    item.fid = query.ColumnInt64(0);
+    item.class_name = query.ColumnText(1);
+    item.site_xy = {query.ColumnDouble(2), query.ColumnDouble(3)};
+    item.z_m = query.ColumnDouble(4);
+    item.size_m = query.ColumnDouble(5);
+    item.confidence = query.ColumnDouble(6);
+    item.first_run_id = query.ColumnInt64(7);
+    item.last_run_id = query.ColumnInt64(8);
+    item.times_seen = static_cast<int>(query.ColumnInt64(9));
+    items.push_back(std::move(item));
+  }
+  return items;
+}
+
+}  // namespace littermap::db

@@ -1,0 +1,95 @@
+#include "db/spatial_ref_sys.hpp"
+
+#include <proj.h>
+
+#include <cmath>
+#include <memory>
+
+#include "core/error.hpp"
+
+namespace littermap::db {
+namespace {
+
+// The WKT of EPSG:4326 as given in the GeoPackage specification (Table 11).
+constexpr const char* kWgs84Wkt =
+    "GEOGCS[\"WGS 84\",DATUM[\"WGS_1984\",SPHEROID[\"WGS 84\",6378137,298.257223563,"
+    "AUTHORITY[\"EPSG\",\"7030\"]],AUTHORITY[\"EPSG\",\"6326\"]],PRIMEM[\"Greenwich\",0,"
+    "AUTHORITY[\"EPSG\",\"8901\"]],UNIT[\"degree\",0.0174532925199433,"
+    "AUTHORITY[\"EPSG\",\"9122\"]],AXIS[\"Latitude\",NORTH],AXIS[\"Longitude\",EAST],"
+    "AUTHORITY[\"EPSG\",\"4326\"]]";
+
+struct ContextDeleter {
+  void operator()(PJ_CONTEXT* context) const { proj_context_destroy(context); }
+};
+struct PjDeleter {
+  void operator()(PJ* pj) const { proj_destroy(pj); }
+};
+using ContextPtr = std::unique_ptr<PJ_CONTEXT, ContextDeleter>;
+using PjPtr = std::unique_ptr<PJ, PjDeleter>;
+
+bool AxesInMetres(PJ_CONTEXT* context, PJ* crs) {
+  PjPtr cs(proj_crs_get_coordinate_system(context, crs));
+  if (!cs) return false;
+  const int axes = proj_cs_get_axis_count(context, cs.get());
+  for (int i = 0; i < axes; ++i) {
+    double factor = 0.0;
+    if (!proj_cs_get_axis_info(context, cs.get(), i, nullptr, nullptr, nullptr, &factor, nullptr,
+                               nullptr, nullptr) ||
+        std::abs(factor - 1.0) > 1e-12) {
+      return false;
+    }
+  }
+  return axes >= 2;
+}
+
+}  // namespace
+
+std::vector<SpatialRefSys> RequiredSpatialRefSys() {
+  return {
+      {"WGS 84 geodetic", 4326, "EPSG", 4326, kWgs84Wkt,
+       "longitude/latitude coordinates in decimal degrees on the WGS 84 spheroid"},
+      {"Undefined cartesian SRS", -1, "NONE", -1, "undefined",
+       "undefined cartesian coordinate reference system"},
+      {"Undefined geographic SRS", 0, "NONE", 0, "undefined",
+       "undefined geographic coordinate reference system"},
+  };
+}
+
+SpatialRefSys EpsgSpatialRefSys(int epsg_code) {
+  const std::string code = "EPSG:" + std::to_string(epsg_code);
+  ContextPtr context(proj_context_create());
+  proj_log_level(context.get(), PJ_LOG_NONE);  // libraries never print; the error says it all
+  PjPtr crs(proj_create(context.get(), code.c_str()));
+  if (!crs) throw UsageError("--crs " + code + ": not a coordinate reference system PROJ knows");
+  if (proj_get_type(crs.get()) != PJ_TYPE_PROJECTED_CRS ||
+      !AxesInMetres(context.get(), crs.get())) {
+    throw UsageError("--crs " + code + " (" + proj_get_name(crs.get()) +
+                     "): the site CRS must be a projected CRS in metres (e.g. a UTM zone)");
+  }
+  const char* wkt = proj_as_wkt(context.get(), crs.get(), PJ_WKT1_GDAL, nullptr);
+  if (wkt == nullptr) throw InternalError(code + ": PROJ cannot write it as WKT 1");
+  SpatialRefSys srs;
+  srs.srs_name = proj_get_name(crs.get());
+  srs.srs_id = epsg_code;
+  srs.organization = "EPSG";
+  srs.organization_coordsys_id = epsg_code;
+  srs.definition = wkt;
+  if (const char* scope = proj_get_scope(crs.get())) srs.description = scope;
+  return srs;
+}
+
+SpatialRefSys LocalSpatialRefSys(const std::string& site_name) {
+  SpatialRefSys srs;
+  srs.srs_name = "littermap site frame: " + site_name;
+  srs.srs_id = kLocalSiteSrsId;
+  srs.organization = "littermap";
+  srs.organization_coordsys_id = kLocalSiteSrsId;
+  srs.definition =
+      "LOCAL_CS[\"littermap site frame\",LOCAL_DATUM[\"robot site map\",0],"
+      "UNIT[\"metre\",1,AUTHORITY[\"EPSG\",\"9001\"]],AXIS[\"Easting\",EAST],"
+      "AXIS[\"Northing\",NORTH]]";
+  srs.description = "local engineering frame of the robot's site map, metres, not georeferenced";
+  return srs;
+}
+
+}  // namespace littermap::db

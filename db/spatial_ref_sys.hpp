@@ -1,0 +1,34 @@
+#pragma once
+// Rows of gpkg_spatial_ref_sys: the three every GeoPackage must hold (clause 1.1.2.1.2), the
+// site CRS from the EPSG registry (definition text from PROJ), or a local engineering frame for
+// a site without georeference.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace littermap::db {
+
+struct SpatialRefSys {
+  std::string srs_name;
+  std::int32_t srs_id = 0;
+  std::string organization;
+  std::int32_t organization_coordsys_id = 0;
+  std::string definition;  // WKT 1 (the GeoPackage core definition column)
+  std::string description;
+};
+
+// srs_id of the local site frame (GeoPackage leaves ids outside the EPSG range to the user).
+constexpr std::int32_t kLocalSiteSrsId = 100000;
+
+// WGS 84 (4326), undefined cartesian (-1) and undefined geographic (0).
+std::vector<SpatialRefSys> RequiredSpatialRefSys();
+
+// A projected CRS in metres from the EPSG registry; throws UsageError naming the code when PROJ
+// does not know it or it is not a projected CRS with metre axes (site coordinates are metres).
+SpatialRefSys EpsgSpatialRefSys(int epsg_code);
+
+// A right-handed metric frame (x east, y north) with no link to the Earth.
+SpatialRefSys LocalSpatialRefSys(const std::string& site_name);
+
+}  // namespace littermap::db

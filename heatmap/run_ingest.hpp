@@ -1,0 +1,62 @@
+#pragma once
+// Adds one reconstructed run to a site database: the run, its track (run_tracks), the ground
+// its camera observed (coverage), its detections and the litter items they are. An item of the
+// same class within same_item_radius_m of a known item is that item seen again (litter stays
+// until picked up), so reports can tell new litter from old. Idempotent: a run whose inputs'
+// digest is already stored changes nothing. Everything is written in one transaction.
+//
+// Registration: the run's map frame is taken as the site frame (true for simulator runs of one
+// world and for runs that start from the dock); matching a run's occupancy map to the site map
+// is not done yet.
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/planar_pose.hpp"
+#include "db/site_database.hpp"
+#include "heatmap/run_items.hpp"
+#include "heatmap/survey_effort.hpp"
+
+namespace littermap::heatmap {
+
+struct IngestOptions {
+  CameraFootprintOptions camera;
+  double coverage_cell_size_m = 0.5;
+  double same_item_radius_m = 0.5;
+  // Keep only items inside the run's camera coverage: for the simulator's truth, which lists
+  // every item of the world, seen or not.
+  bool drop_unobserved_items = false;
+};
+
+struct RunInput {
+  std::string name;
+  std::string source_digest;
+  double start_time_s = 0.0;
+  double end_time_s = 0.0;
+  std::vector<PlanarPose> T_site_base;  // in time order
+  std::vector<RunItem> items;           // site frame
+};
+
+struct IngestResult {
+  bool already_ingested = false;
+  std::int64_t run_id = 0;
+  std::size_t poses = 0;
+  std::size_t detections = 0;
+  std::size_t new_items = 0;
+  std::size_t items_seen_again = 0;
+  std::size_t items_unobserved = 0;  // dropped (drop_unobserved_items)
+  double observed_area_m2 = 0.0;
+  double length_m = 0.0;
+};
+
+// Throws BadInputError when the run has fewer than two poses.
+IngestResult IngestRun(db::SiteDatabase& site, const RunInput& run, const IngestOptions& options);
+
+// A hex FNV-1a 64 digest of the files' bytes, in order: what identifies a run's inputs.
+std::string DigestFiles(std::span<const std::filesystem::path> files);
+
+}  // namespace littermap::heatmap

@@ -1,0 +1,124 @@
+// littermap ingest and heatmap on synthetic run directories: idempotent ingest, two ingests at
+// once on one site, and the heatmap outputs.
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/sqlite_database.hpp"
+#include "support/run_command.hpp"
+#include "support/temp_dir.hpp"
+
+namespace littermap {
+namespace {
+
+using testing::RunLittermap;
+using testing::TempDir;
+
+// A run along y = y0 from x = 0 to x = 40, heading east, 10 Hz at 0.5 m/s, with items next to
+// the path every 4 m.
+void WriteRun(const std::filesystem::path& dir, double y0, double t0, const std::string& cls) {
+  std::filesystem::create_directories(dir);
+  std::ofstream tum(dir / "trajectory.tum");
+  tum << "# timestamp tx ty tz qx qy qz qw\n";
+  for (int i = 0; i <= 800; ++i) {
+    char line[128];
+    std::snprintf(line, sizeof(line), "%.3f %.3f %.3f 0 0 0 0 1\n", t0 + 0.1 * i, 0.05 * i, y0);
+    tum << line;
+  }
+  std::ofstream items(dir / "items.csv");
+  items << "id,class,x,y,z,size_m,confidence\n";
+  for (int i = 1; i <= 9; ++i)
+    items << i << ',' << cls << ',' << 4 * i << ',' << y0 + 1 << ",0,0.1,0.9\n";
+}
+
+std::int64_t Integer(const std::filesystem::path& file, const std::string& sql) {
+  SqliteDatabase database(file, SqliteDatabase::Mode::kReadOnly);
+  SqliteStatement query = database.Prepare(sql);
+  return query.Step() ? query.ColumnInt64(0) : -1;
+}
+
+std::string Text(const std::filesystem::path& file, const std::string& sql) {
+  SqliteDatabase database(file, SqliteDatabase::Mode::kReadOnly);
+  SqliteStatement query = database.Prepare(sql);
+  return query.Step() ? query.ColumnText(0) : "<no row>";
+}
+
+TEST(IngestHeatmapCli, IngestIsIdempotentAndHeatmapWritesEverything) {
+  TempDir dir;
+  const auto site = dir / "site.gpkg";
+  WriteRun(dir / "run1", 10.0, 1700000000.0, "can");
+  ASSERT_EQ(RunLittermap("site init " + site.string() +
+                         " --name p --crs EPSG:32633 --origin 500000 5000000")
+                .exit_code,
+            0);
+  const auto first = RunLittermap("ingest " + site.string() + " " + (dir / "run1").string());
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  EXPECT_NE(first.output.find("9 new items"), std::string::npos) << first.output;
+  const auto again = RunLittermap("ingest " + site.string() + " " + (dir / "run1").string());
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_NE(again.output.find("nothing changed"), std::string::npos) << again.output;
+  EXPECT_EQ(Integer(site, "SELECT count(*) FROM litter_items"), 9);
+  EXPECT_EQ(Integer(site, "SELECT count(*) FROM detections"), 9);
+
+  const auto out = dir / "out";
+  const auto heatmap = RunLittermap("heatmap " + site.string() + " -o " + out.string());
+  ASSERT_EQ(heatmap.exit_code, 0) << heatmap.output;
+  for (const char* name :
+       {"density.tif", "effort.tif", "hotspots.csv", "items.csv", "items.geojson", "density.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(out / name)) << name;
+  }
+  std::ifstream geojson(out / "items.geojson");
+  const auto json = nlohmann::json::parse(geojson);
+  EXPECT_EQ(json["features"].size(), 9u);
+  const double lon = json["features"][0]["geometry"]["coordinates"][0];
+  EXPECT_NEAR(lon, 15.0, 0.01);  // 500 km easting in UTM 33N is 15 deg E
+  EXPECT_GT(Integer(site, "SELECT count(*) FROM hotspots"), 0);
+  EXPECT_EQ(Text(site, "PRAGMA integrity_check"), "ok");
+  EXPECT_EQ(Text(site, "PRAGMA foreign_key_check"), "<no row>");
+}
+
+TEST(IngestHeatmapCli, TwoIngestsAtOnceBothLand) {
+  TempDir dir;
+  const auto site = dir / "site.gpkg";
+  ASSERT_EQ(RunLittermap("site init " + site.string() + " --name p").exit_code, 0);
+  for (int i = 0; i < 4; ++i) {
+    WriteRun(dir / ("run" + std::to_string(i)), 5.0 * i, 1700000000.0 + 1000 * i,
+             i % 2 ? "cup" : "can");
+  }
+  // Four processes started together; SQLite's busy timeout serialises their transactions.
+  std::string command;
+  for (int i = 0; i < 4; ++i) {
+    command += std::string(LITTERMAP_EXECUTABLE) + " -q ingest " + site.string() + " " +
+               (dir / ("run" + std::to_string(i))).string() + " > " +
+               (dir / ("log" + std::to_string(i))).string() + " 2>&1 & ";
+  }
+  command += "wait";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  EXPECT_EQ(Integer(site, "SELECT count(*) FROM runs"), 4);
+  EXPECT_EQ(Integer(site, "SELECT count(*) FROM coverage"), 4);
+  EXPECT_EQ(Integer(site, "SELECT count(*) FROM run_tracks"), 4);
+  EXPECT_EQ(Integer(site, "SELECT count(*) FROM detections"), 36);
+  EXPECT_EQ(Text(site, "PRAGMA integrity_check"), "ok");
+  EXPECT_EQ(Text(site, "PRAGMA foreign_key_check"), "<no row>");
+}
+
+TEST(IngestHeatmapCli, RefusesWhatIsNotASite) {
+  TempDir dir;
+  WriteRun(dir / "run", 0.0, 0.0, "can");
+  std::ofstream(dir / "notes.gpkg") << "plain text, not SQLite at all, long enough to be a header "
+                                       "of one hundred bytes if SQLite tried to read it as one";
+  const auto text =
+      RunLittermap("ingest " + (dir / "notes.gpkg").string() + " " + (dir / "run").string());
+  EXPECT_EQ(text.exit_code, 2) << text.output;
+  EXPECT_NE(text.output.find("notes.gpkg: not a GeoPackage"), std::string::npos) << text.output;
+  const auto missing =
+      RunLittermap("heatmap " + (dir / "none.gpkg").string() + " -o " + (dir / "out").string());
+  EXPECT_EQ(missing.exit_code, 2) << missing.output;
+}
+
+}  // namespace
+}  // namespace littermap

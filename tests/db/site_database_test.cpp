@@ -1,0 +1,197 @@
+#include "db/site_database.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "core/error.hpp"
+#include "db/geopackage_schema.hpp"
+#include "db/site_migrations.hpp"
+#include "support/temp_dir.hpp"
+
+namespace littermap::db {
+namespace {
+
+using littermap::testing::TempDir;
+
+SiteOptions Options(const std::string& name, std::optional<int> epsg = std::nullopt,
+                    double easting = 0, double northing = 0, double rotation_deg = 0) {
+  SiteOptions options;
+  options.name = name;
+  options.epsg_code = epsg;
+  options.origin_easting_m = easting;
+  options.origin_northing_m = northing;
+  options.rotation_deg = rotation_deg;
+  return options;
+}
+
+std::string Text(SqliteDatabase& database, const std::string& sql) {
+  SqliteStatement query = database.Prepare(sql);
+  return query.Step() ? query.ColumnText(0) : "<no row>";
+}
+
+std::int64_t Integer(SqliteDatabase& database, const std::string& sql) {
+  SqliteStatement query = database.Prepare(sql);
+  return query.Step() ? query.ColumnInt64(0) : -999;
+}
+
+TEST(SiteDatabase, LocalSiteIsAValidGeoPackage) {
+  TempDir dir;
+  SiteDatabase site = SiteDatabase::Create(dir / "park.gpkg", Options("North park"));
+  SqliteDatabase& sql = site.sql();
+  EXPECT_EQ(Integer(sql, "PRAGMA application_id"), 0x47504B47);
+  EXPECT_EQ(Integer(sql, "PRAGMA user_version"), 10400);
+  EXPECT_EQ(Text(sql, "PRAGMA integrity_check"), "ok");
+  EXPECT_EQ(Text(sql, "PRAGMA foreign_key_check"), "<no row>");
+  EXPECT_EQ(Integer(sql, "PRAGMA foreign_keys"), 1);
+  EXPECT_EQ(Text(sql, "PRAGMA journal_mode"), "wal");
+  // The three rows every GeoPackage must hold, plus the site frame.
+  EXPECT_EQ(Text(sql, "SELECT organization FROM gpkg_spatial_ref_sys WHERE srs_id = 4326"), "EPSG");
+  EXPECT_EQ(Text(sql, "SELECT definition FROM gpkg_spatial_ref_sys WHERE srs_id = -1"),
+            "undefined");
+  EXPECT_EQ(Text(sql, "SELECT definition FROM gpkg_spatial_ref_sys WHERE srs_id = 0"), "undefined");
+  EXPECT_EQ(Integer(sql, "SELECT count(*) FROM gpkg_spatial_ref_sys WHERE srs_id = 100000"), 1);
+  EXPECT_EQ(Integer(sql,
+                    "SELECT count(*) FROM gpkg_contents WHERE data_type = 'features' AND "
+                    "srs_id = 100000"),
+            3);
+  EXPECT_EQ(Text(sql,
+                 "SELECT geometry_type_name FROM gpkg_geometry_columns "
+                 "WHERE table_name = 'run_tracks'"),
+            "LINESTRING");
+  EXPECT_EQ(Text(sql,
+                 "SELECT geometry_type_name FROM gpkg_geometry_columns "
+                 "WHERE table_name = 'litter_items' AND column_name = 'geom'"),
+            "POINT");
+  EXPECT_EQ(site.site().name, "North park");
+  EXPECT_FALSE(site.site().frame.georeferenced());
+  EXPECT_EQ(site.site().schema_version, LatestSiteSchemaVersion());
+}
+
+TEST(SiteDatabase, EpsgSiteCarriesProjDefinition) {
+  TempDir dir;
+  SiteDatabase site =
+      SiteDatabase::Create(dir / "park.gpkg", Options("Madison", 32616, 305000, 4770000, 90));
+  const std::string definition =
+      Text(site.sql(), "SELECT definition FROM gpkg_spatial_ref_sys WHERE srs_id = 32616");
+  EXPECT_EQ(definition.rfind("PROJCS[\"WGS 84 / UTM zone 16N\"", 0), 0u) << definition;
+  EXPECT_EQ(site.site().frame.srs_id, 32616);
+  // Rotation 90 deg: the site x axis points north.
+  const PointXY crs = site.site().frame.ToCrs({10, 0});
+  EXPECT_NEAR(crs.x, 305000, 1e-9);
+  EXPECT_NEAR(crs.y, 4770010, 1e-9);
+}
+
+TEST(SiteDatabase, RefusesUnusableCrsAndLeavesNoFile) {
+  TempDir dir;
+  EXPECT_THROW(SiteDatabase::Create(dir / "a.gpkg", Options("a", 4326)), UsageError);
+  EXPECT_THROW(SiteDatabase::Create(dir / "a.gpkg", Options("a", 999999)), UsageError);
+  EXPECT_THROW(SiteDatabase::Create(dir / "a.gpkg", Options("a", std::nullopt, 0, 0, 5)),
+               UsageError);
+  EXPECT_FALSE(std::filesystem::exists(dir / "a.gpkg"));
+}
+
+TEST(SiteDatabase, ReopensWithRecordsAndGeometryInTheSiteCrs) {
+  TempDir dir;
+  const auto file = dir / "park.gpkg";
+  {
+    SiteDatabase site = SiteDatabase::Create(file, Options("p", 32633, 500000, 5000000, 30));
+    site.InTransaction([&] {
+      const std::int64_t run = site.AddRun({0, "run1", "digest-1", 0, 900, 120});
+      const std::vector<PointXY> track = {{0, 0}, {3, 4}, {3, 10}};
+      site.AddRunTrack(run, track);
+      site.AddItem({0, "bottle", {3, 4}, 0.05, 0.2, 0.9, run, run, 1});
+    });
+    EXPECT_THROW(site.AddRun({0, "again", "digest-1", 0, 1, 1}), SqliteError);  // unique digest
+  }
+  SiteDatabase site = SiteDatabase::Open(file);
+  EXPECT_EQ(site.site().frame.epsg_code, 32633);
+  EXPECT_DOUBLE_EQ(site.site().frame.rotation_deg, 30);
+  ASSERT_TRUE(site.FindRun("digest-1").has_value());
+  EXPECT_FALSE(site.FindRun("digest-2").has_value());
+  const auto tracks = site.RunTracks();
+  ASSERT_EQ(tracks.size(), 1u);
+  ASSERT_EQ(tracks[0].site_points.size(), 3u);
+  EXPECT_NEAR(tracks[0].site_points[2].y, 10, 1e-9);
+  const auto items = site.Items();
+  ASSERT_EQ(items.size(), 1u);
+  EXPECT_EQ(items[0].class_name, "bottle");
+  // The stored geometry is in EPSG:32633, not the site frame.
+  SqliteStatement geom = site.sql().Prepare("SELECT geom FROM litter_items");
+  ASSERT_TRUE(geom.Step());
+  const GeometryBlob blob = DecodeGeometry(geom.ColumnBlob(0), "test");
+  const PointXY expected = site.site().frame.ToCrs({3, 4});
+  EXPECT_EQ(blob.srs_id, 32633);
+  EXPECT_NEAR(blob.points[0].x, expected.x, 1e-9);
+  EXPECT_NEAR(blob.points[0].y, expected.y, 1e-9);
+  EXPECT_NEAR(expected.x, 500000 + 3 * std::cos(M_PI / 6) - 4 * std::sin(M_PI / 6), 1e-9);
+  EXPECT_EQ(Integer(site.sql(),
+                    "SELECT count(*) FROM gpkg_contents WHERE "
+                    "table_name = 'litter_items' AND min_x IS NOT NULL"),
+            1);
+  EXPECT_EQ(Text(site.sql(), "PRAGMA integrity_check"), "ok");
+  EXPECT_EQ(Text(site.sql(), "PRAGMA foreign_key_check"), "<no row>");
+}
+
+TEST(SiteDatabase, ForeignKeysAreEnforced) {
+  TempDir dir;
+  SiteDatabase site = SiteDatabase::Create(dir / "park.gpkg", Options("p"));
+  EXPECT_THROW(site.AddItem({0, "can", {1, 1}, 0, 0.1, 1, 42, 42, 1}), SqliteError);
+}
+
+TEST(SiteDatabase, RefusesFilesThatAreNotSiteGeoPackages) {
+  TempDir dir;
+  const auto text = dir / "notes.gpkg";
+  std::ofstream(text) << "this is not an SQLite database, just some text that is long enough "
+                         "to fill the SQLite header of one hundred bytes................";
+  try {
+    SiteDatabase::Open(text);
+    FAIL() << "opened a text file";
+  } catch (const BadInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("notes.gpkg: not a GeoPackage"), std::string::npos)
+        << e.what();
+  }
+  const auto plain = dir / "plain.db";
+  { SqliteDatabase(plain, SqliteDatabase::Mode::kCreate).Execute("CREATE TABLE t (x)"); }
+  try {
+    SiteDatabase::Open(plain);
+    FAIL() << "opened a plain SQLite database";
+  } catch (const BadInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("application_id is 0x00000000"), std::string::npos)
+        << e.what();
+  }
+  const auto bare = dir / "bare.gpkg";
+  {
+    SqliteDatabase database(bare, SqliteDatabase::Mode::kCreate);
+    CreateGeoPackageCore(database);
+  }
+  try {
+    SiteDatabase::Open(bare);
+    FAIL() << "opened a GeoPackage that is not a site";
+  } catch (const BadInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not a littermap site database"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(SiteDatabase::Open(dir / "missing.gpkg"), BadInputError);
+  EXPECT_THROW(SiteDatabase::Create(bare, Options("x")), UsageError);  // exists
+}
+
+TEST(SiteDatabase, RefusesASchemaFromTheFuture) {
+  TempDir dir;
+  const auto file = dir / "park.gpkg";
+  {
+    SiteDatabase site = SiteDatabase::Create(file, Options("p"));
+    site.sql().Execute(
+        "INSERT INTO littermap_schema_version (version, description) "
+        "VALUES (999, 'future')");
+  }
+  try {
+    SiteDatabase::Open(file);
+    FAIL() << "opened a newer schema";
+  } catch (const BadInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("schema version 999"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace littermap::db

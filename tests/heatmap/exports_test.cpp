@@ -1,0 +1,122 @@
+// Run item files, hotspots, the WGS 84 transform and the CSV/GeoJSON exports.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "heatmap/exports.hpp"
+#include "heatmap/hotspots.hpp"
+#include "heatmap/run_items.hpp"
+#include "heatmap/wgs84_transform.hpp"
+#include "support/temp_dir.hpp"
+
+namespace littermap::heatmap {
+namespace {
+
+using littermap::testing::TempDir;
+
+std::string Slurp(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(RunItems, ReadsDetectStageAndTruthFiles) {
+  TempDir dir;
+  std::ofstream(dir / "items.csv") << "id,class,x,y,z,size_m,confidence\n"
+                                      "a1,can,1.5,-2.25,0.05,0.12,0.8\n";
+  std::ofstream(dir / "litter.csv") << "id,class,x,y,z,size_m\r\n3,cup,4,5,0,0.1\r\n";
+  const auto items = ReadRunItems(dir / "items.csv");
+  ASSERT_EQ(items.size(), 1u);
+  EXPECT_EQ(items[0].id, "a1");
+  EXPECT_EQ(items[0].class_name, "can");
+  EXPECT_EQ(items[0].xy.y, -2.25);
+  EXPECT_EQ(items[0].confidence, 0.8);
+  const auto truth = ReadRunItems(dir / "litter.csv");
+  ASSERT_EQ(truth.size(), 1u);
+  EXPECT_EQ(truth[0].confidence, 1.0);
+  EXPECT_EQ(truth[0].size_m, 0.1);
+}
+
+TEST(RunItems, ErrorsNameFileLineAndColumn) {
+  TempDir dir;
+  std::ofstream(dir / "bad.csv") << "id,class,x,y,z,size_m\n1,can,1,2,0,0.1\n2,can,oops,2,0,0.1\n";
+  try {
+    ReadRunItems(dir / "bad.csv");
+    FAIL() << "read a bad number";
+  } catch (const BadInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.csv:3: column 'x'"), std::string::npos) << e.what();
+  }
+  std::ofstream(dir / "nox.csv") << "id,class,y,z,size_m\n";
+  EXPECT_THROW(ReadRunItems(dir / "nox.csv"), BadInputError);
+  EXPECT_THROW(ReadRunItems(dir / "missing.csv"), BadInputError);
+}
+
+TEST(Wgs84Transform, UtmCentralMeridianOnTheEquator) {
+  // UTM zone 33N: false easting 500 km on the central meridian 15 deg E.
+  const Wgs84Transform wgs84(32633);
+  const LonLat ll = wgs84({500000.0, 0.0});
+  EXPECT_NEAR(ll.lon_deg, 15.0, 1e-9);
+  EXPECT_NEAR(ll.lat_deg, 0.0, 1e-9);
+  const LonLat north = wgs84({500000.0, 1000.0});  // 1 km north: about 0.00904 deg
+  EXPECT_NEAR(north.lat_deg, 1000.0 / 110574.0, 1e-5);
+}
+
+TEST(Hotspots, RanksPeaksAndNamesTheirClass) {
+  GridGeometry grid;
+  grid.max_y_m = 20.0;
+  grid.cell_size_m = 1.0;
+  grid.width = grid.height = 20;
+  Raster density(grid, 0.0f);
+  density.at(5, 5) = 3.0f;
+  density.at(6, 5) = 2.0f;  // shoulder of the first peak, not a peak itself
+  density.at(15, 15) = 5.0f;
+  density.at(0, 19) = -9999.0f;
+  const std::vector<ClassifiedPoint> items = {
+      {{5.5, 14.5}, "can"}, {{15.5, 4.5}, "cup"}, {{15.0, 4.0}, "cup"}, {{15.6, 4.6}, "can"}};
+  HotspotOptions options;
+  const auto hotspots = FindHotspots(density, -9999.0f, items, options);
+  ASSERT_EQ(hotspots.size(), 2u);
+  EXPECT_EQ(hotspots[0].rank, 1);
+  EXPECT_EQ(hotspots[0].density_per_100m2, 5.0);
+  EXPECT_DOUBLE_EQ(hotspots[0].crs.x, 15.5);
+  EXPECT_DOUBLE_EQ(hotspots[0].crs.y, 4.5);
+  EXPECT_EQ(hotspots[0].dominant_class, "cup");
+  EXPECT_EQ(hotspots[0].items_nearby, 3);
+  EXPECT_EQ(hotspots[1].dominant_class, "can");
+}
+
+TEST(Exports, GeoJsonIsRfc7946LonLat) {
+  TempDir dir;
+  db::SiteFrame frame;
+  frame.srs_id = frame.epsg_code = 32633;
+  frame.origin_easting_m = 500000.0;
+  const std::vector<db::ItemRecord> items = {
+      {7, "plastic \"bag\"", {0.0, 0.0}, 0, 0.3, 0.9, 1, 2, 2}};
+  const Wgs84Transform wgs84(32633);
+  WriteItemsGeoJson(dir / "items.geojson", items, frame, wgs84);
+  const auto json = nlohmann::json::parse(Slurp(dir / "items.geojson"));
+  EXPECT_EQ(json["type"], "FeatureCollection");
+  EXPECT_FALSE(json.contains("crs"));  // RFC 7946 removed it: WGS 84 only
+  ASSERT_EQ(json["features"].size(), 1u);
+  const auto& feature = json["features"][0];
+  EXPECT_EQ(feature["geometry"]["type"], "Point");
+  EXPECT_NEAR(feature["geometry"]["coordinates"][0].get<double>(), 15.0, 1e-7);  // lon first
+  EXPECT_NEAR(feature["geometry"]["coordinates"][1].get<double>(), 0.0, 1e-7);
+  EXPECT_EQ(feature["properties"]["class"], "plastic \"bag\"");
+  EXPECT_EQ(feature["properties"]["times_seen"], 2);
+
+  WriteItemsCsv(dir / "items.csv", items, frame, nullptr);
+  const std::string csv = Slurp(dir / "items.csv");
+  EXPECT_NE(
+      csv.find("\n7,\"plastic \"\"bag\"\"\",0.000,0.000,500000.000,0.000,,,0.300,0.900,1,2,2\n"),
+      std::string::npos)
+      << csv;
+}
+
+}  // namespace
+}  // namespace littermap::heatmap
