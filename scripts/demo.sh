@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs the furthest littermap stages that exist on the samples and says where the results are:
 # a simulated survey of samples/worlds/park_small.yaml and the real Intel Research Lab laser log,
-# each recorded into a run bag, reconstructed, and scored against its ground truth.
+# each recorded into a run bag, reconstructed, and scored against its ground truth; the park's
+# litter goes into a site database and a density map.
 #   scripts/demo.sh LITTERMAP_BINARY OUT_DIR
 set -euo pipefail
 littermap=$1
@@ -22,12 +23,19 @@ mkdir -p "$out/park_small" "$out/intel"
 step() { echo; echo "== $*"; }
 
 step "simulating a survey of the sample park ($world)"
-"$littermap" simulate "$world" -o "$out/park_small/bag" --truth "$out/park_small/truth"
+"$littermap" simulate "$world" -o "$out/park_small/bag" --truth "$out/park_small/truth" \
+  --contact-sheet "$out/park_small/contact_sheet.png"
 step "reconstructing the simulated run"
 "$littermap" reconstruct "$out/park_small/bag" -o "$out/park_small/run"
 step "trajectory error against the simulator's ground truth"
 "$littermap" eval trajectory "$out/park_small/run/trajectory.tum" \
   "$out/park_small/truth/trajectory.tum"
+
+step "site database and litter density map of the sample park"
+echo "(detection does not exist yet: the simulator's truth stands in for the detected items)"
+"$littermap" site init "$out/park_small/site.gpkg" --name "park_small"
+"$littermap" ingest "$out/park_small/site.gpkg" "$out/park_small/truth" --name park_small-seed7
+"$littermap" heatmap "$out/park_small/site.gpkg" -o "$out/park_small/maps"
 
 step "importing the Intel Research Lab laser log (real data, corrupted odometry, seed 1)"
 "$littermap" import carmen "$intel" -o "$out/intel/bag" --reference "$out/intel/reference.tum" \
@@ -40,8 +48,11 @@ step "trajectory error against the log's corrected poses"
 step "results"
 cat <<EOF
 simulated park: bag $out/park_small/bag, ground truth $out/park_small/truth,
-                map $out/park_small/run/map.png, trajectory $out/park_small/run/trajectory.tum
+                map $out/park_small/run/map.png, trajectory $out/park_small/run/trajectory.tum,
+                contact sheet $out/park_small/contact_sheet.png,
+                site database $out/park_small/site.gpkg (a GeoPackage),
+                density $out/park_small/maps/density.tif and density.png, hotspots.csv
 Intel lab:      bag $out/intel/bag, map $out/intel/run/map.png,
                 trajectory $out/intel/run/trajectory.tum
-(detection, the site database, heatmaps and the HTML report extend this demo as they land)
+(detection and the HTML report extend this demo as they land)
 EOF
