@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "capture/message_header.hpp"
 #include "capture/output_guard.hpp"
 #include "capture/topics.hpp"
 #include "capture/tum_trajectory.hpp"
@@ -14,14 +15,6 @@ namespace {
 
 // msg::Time holds int32 seconds; keep stamps well inside it (year 2033).
 constexpr double kMaxStampS = 2e9;
-
-msg::Header MakeHeader(TimestampNs stamp_ns, const char* frame_id) {
-  msg::Header header;
-  header.stamp.sec = static_cast<std::int32_t>(stamp_ns / kNanosecondsPerSecond);
-  header.stamp.nanosec = static_cast<std::uint32_t>(stamp_ns % kNanosecondsPerSecond);
-  header.frame_id = frame_id;
-  return header;
-}
 
 msg::Quaternion YawQuaternion(double theta_rad) {
   msg::Quaternion q;

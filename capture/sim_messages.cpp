@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "capture/message_header.hpp"
 #include "capture/topics.hpp"
 
 namespace littermap::sim_messages {
@@ -13,7 +14,7 @@ msg::Quaternion ToMsg(const Eigen::Quaterniond& q) { return {q.x(), q.y(), q.z()
 msg::TransformStamped Transform(TimestampNs stamp_ns, const char* child,
                                 const Eigen::Isometry3d& T_base_child) {
   msg::TransformStamped transform;
-  transform.header = Header(stamp_ns, frames::kBase);
+  transform.header = MakeHeader(stamp_ns, frames::kBase);
   transform.child_frame_id = child;
   const Eigen::Vector3d t = T_base_child.translation();
   transform.transform.translation = {t.x(), t.y(), t.z()};
@@ -23,14 +24,6 @@ msg::TransformStamped Transform(TimestampNs stamp_ns, const char* child,
 
 }  // namespace
 
-msg::Header Header(TimestampNs stamp_ns, const char* frame_id) {
-  msg::Header header;
-  header.stamp.sec = static_cast<std::int32_t>(stamp_ns / kNanosecondsPerSecond);
-  header.stamp.nanosec = static_cast<std::uint32_t>(stamp_ns % kNanosecondsPerSecond);
-  header.frame_id = frame_id;
-  return header;
-}
-
 msg::TFMessage StaticTransforms(TimestampNs stamp_ns, const sim::Simulation& simulation) {
   return msg::TFMessage{{Transform(stamp_ns, frames::kLaser, simulation.T_base_laser()),
                          Transform(stamp_ns, frames::kCamera, simulation.T_base_optical())}};
@@ -39,7 +32,7 @@ msg::TFMessage StaticTransforms(TimestampNs stamp_ns, const sim::Simulation& sim
 msg::Odometry Odometry(TimestampNs stamp_ns, const PlanarPose& T_odom_base,
                        const sim::RobotState& state) {
   msg::Odometry odometry;
-  odometry.header = Header(stamp_ns, frames::kOdom);
+  odometry.header = MakeHeader(stamp_ns, frames::kOdom);
   odometry.child_frame_id = frames::kBase;
   odometry.pose.pose.position = {T_odom_base.x_m, T_odom_base.y_m, 0};
   odometry.pose.pose.orientation = {0, 0, std::sin(T_odom_base.theta_rad / 2),
@@ -51,7 +44,7 @@ msg::Odometry Odometry(TimestampNs stamp_ns, const PlanarPose& T_odom_base,
 
 msg::LaserScan Scan(TimestampNs stamp_ns, const LaserScan& scan) {
   msg::LaserScan out;
-  out.header = Header(stamp_ns, frames::kLaser);
+  out.header = MakeHeader(stamp_ns, frames::kLaser);
   out.angle_min = static_cast<float>(scan.angle_min_rad);
   out.angle_max = static_cast<float>(scan.angle_max_rad());
   out.angle_increment = static_cast<float>(scan.angle_increment_rad);
@@ -67,7 +60,7 @@ msg::LaserScan Scan(TimestampNs stamp_ns, const LaserScan& scan) {
 
 msg::Imu Imu(TimestampNs stamp_ns, const sim::ImuSample& sample, double tilt_sigma_rad) {
   msg::Imu imu;
-  imu.header = Header(stamp_ns, frames::kBase);
+  imu.header = MakeHeader(stamp_ns, frames::kBase);
   imu.orientation = ToMsg(sample.orientation);
   const double var = tilt_sigma_rad * tilt_sigma_rad;
   imu.orientation_covariance = {var, 0, 0, 0, var, 0, 0, 0, 1e6};  // yaw: unknown

@@ -15,8 +15,6 @@
 
 namespace littermap::sim_messages {
 
-msg::Header Header(TimestampNs stamp_ns, const char* frame_id);
-
 // base_link -> laser and base_link -> camera_color_optical_frame, stamped stamp_ns.
 msg::TFMessage StaticTransforms(TimestampNs stamp_ns, const sim::Simulation& simulation);
 

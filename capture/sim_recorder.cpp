@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "capture/image_codec.hpp"
+#include "capture/message_header.hpp"
 #include "capture/output_guard.hpp"
 #include "capture/sim_messages.hpp"
 #include "capture/topics.hpp"
@@ -125,7 +126,7 @@ class RunRecorder {
   void WriteFrame(std::size_t k) {
     const double t = simulation_.CameraFrameTime(k);
     const TimestampNs stamp = start_ns_ + FromSeconds(t);
-    const msg::Header header = sim_messages::Header(stamp, frames::kCamera);
+    const msg::Header header = MakeHeader(stamp, frames::kCamera);
     const auto render_start = Clock::now();
     const sim::RgbdRender render = camera_.Render(simulation_.TrueOpticalPose(t), k);
     render_s_ += SecondsSince(render_start);

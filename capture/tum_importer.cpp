@@ -7,6 +7,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "capture/message_header.hpp"
 #include "capture/output_guard.hpp"
 #include "capture/topics.hpp"
 #include "capture/tum_sequence.hpp"
@@ -17,14 +18,6 @@ namespace littermap {
 namespace {
 
 constexpr TimestampNs kMaxStampNs = 2'000'000'000LL * kNanosecondsPerSecond;  // int32 seconds
-
-msg::Header MakeHeader(TimestampNs stamp_ns) {
-  msg::Header header;
-  header.stamp.sec = static_cast<std::int32_t>(stamp_ns / kNanosecondsPerSecond);
-  header.stamp.nanosec = static_cast<std::uint32_t>(stamp_ns % kNanosecondsPerSecond);
-  header.frame_id = frames::kCamera;
-  return header;
-}
 
 std::vector<std::uint8_t> ReadFileBytes(const std::filesystem::path& path) {
   std::ifstream stream(path, std::ios::binary);
@@ -136,7 +129,7 @@ void WriteTumBag(const std::filesystem::path& directory, const std::filesystem::
   for (std::size_t i = 0; i < count; ++i) {
     const TumFrameEntry& colour = sequence.colour[sequence.pairs[i].colour_index];
     const TumFrameEntry& depth = sequence.depth[sequence.pairs[i].depth_index];
-    const msg::Header header = MakeHeader(colour.stamp_ns);
+    const msg::Header header = MakeHeader(colour.stamp_ns, frames::kCamera);
     const msg::CameraInfo info = TumCameraInfo(camera, header);
     writer.WriteMessage(topics::kCameraInfo, colour.stamp_ns, info);
     writer.WriteMessage(topics::kColor, colour.stamp_ns,
