@@ -28,8 +28,11 @@ void RunReconstruct(const ReconstructArguments& arguments, CliContext& context) 
   }
   options.Validate();
   std::vector<std::string> warnings;
+  double laser_height_m = 0;
   const PlanarPose T_base_laser =
-      reconstruct::ReadLaserExtrinsic(arguments.bag, options, &warnings);
+      reconstruct::ReadLaserExtrinsic(arguments.bag, options, &warnings, &laser_height_m);
+  // The ground-hit filter needs the height of the laser above the ground: base_link is on it.
+  if (options.slam.points.laser_height_m == 0) options.slam.points.laser_height_m = laser_height_m;
   reconstruct::SlamPipeline pipeline(options.slam, T_base_laser);
   reconstruct::ReconstructionResult result =
       reconstruct::ReconstructBag(arguments.bag, options, &pipeline, context.Progress());

@@ -133,7 +133,9 @@ TrajectoryMetrics EvaluateTrajectory(const std::vector<StampedPose>& estimate,
         ToIsometry(estimate[matches[i].first]).inverse() * ToIsometry(estimate[matches[j].first]);
     const Eigen::Isometry3d ref_ij = ToIsometry(reference[matches[i].second]).inverse() *
                                      ToIsometry(reference[matches[j].second]);
-    const Eigen::Isometry3d error = ref_ij.inverse() * est_ij;
+    // evaluate_rpe.py: ominus(ominus(E_j, E_i), ominus(G_j, G_i)) with ominus(a, b) = a^-1 b,
+    // i.e. est_ij * ref_ij^-1: a rotation error over the pair also moves the translation.
+    const Eigen::Isometry3d error = est_ij * ref_ij.inverse();
     const double trans = error.translation().norm();
     trans_sum += trans;
     trans_squared += trans * trans;

@@ -7,8 +7,9 @@
 //   alignment of the estimate onto the reference (evaluate_ate.py);
 // - RPE: for every associated pose i, the pose j whose distance travelled along the estimate is
 //   closest to delta_m further (evaluate_rpe.py --fixed_delta --delta_unit m; Kuemmerle et al.
-//   2009 with 1 m pairs); error = inv(inv(R_i) R_j) * inv(E_i) E_j, its translation norm and
-//   rotation angle.
+//   2009 with 1 m pairs); error = (inv(E_i) E_j) * inv(inv(R_i) R_j), its translation norm and
+//   rotation angle, exactly as evaluate_rpe.py composes it. Pairs are chosen by distance along the
+//   estimate, as evaluate_rpe.py and evo (by default) do, not along the reference.
 
 #include <vector>
 

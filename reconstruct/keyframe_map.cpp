@@ -51,10 +51,16 @@ std::vector<PlanarPose> KeyFrameMap::Poses() const {
 }
 
 MapPoints KeyFrameMap::WorldPoints(std::size_t first, std::size_t last) const {
+  std::vector<std::size_t> indices;
+  for (std::size_t i = first; i <= last && i < key_frames_.size(); ++i) indices.push_back(i);
+  return WorldPoints(indices);
+}
+
+MapPoints KeyFrameMap::WorldPoints(const std::vector<std::size_t>& indices) const {
   MapPoints all;
   const bool with_normals = icp_options_.point_to_line;
-  for (std::size_t i = first; i <= last && i < key_frames_.size(); ++i) {
-    const KeyFrame& k = key_frames_[i];
+  for (std::size_t i : indices) {
+    const KeyFrame& k = key_frames_.at(i);
     const double c = std::cos(k.T_world_base.theta_rad), s = std::sin(k.T_world_base.theta_rad);
     for (std::size_t j = 0; j < k.points_base.size(); ++j) {
       all.points.push_back(Transform(k.T_world_base, k.points_base[j]));

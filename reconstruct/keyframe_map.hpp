@@ -59,6 +59,8 @@ class KeyFrameMap {
   const IcpTarget& LocalTarget();
   // World points and normals of key frames [first, last], voxel-downsampled.
   MapPoints WorldPoints(std::size_t first, std::size_t last) const;
+  // World points and normals of the listed key frames, voxel-downsampled.
+  MapPoints WorldPoints(const std::vector<std::size_t>& indices) const;
 
  private:
   KeyFrameMapOptions options_;

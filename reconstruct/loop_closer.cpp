@@ -3,11 +3,19 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "core/error.hpp"
 
 namespace littermap::reconstruct {
 namespace {
+
+// Distance of key frame j from `current` along the pose graph, or along the path without one.
+double GraphDistance(const std::vector<KeyFrame>& frames, std::size_t current, std::size_t j,
+                     const std::vector<double>& graph_distance_m) {
+  return j < graph_distance_m.size() ? graph_distance_m[j]
+                                     : frames[current].path_length_m - frames[j].path_length_m;
+}
 
 bool Better(const IcpResult& a, const IcpResult& b) {
   if (a.converged != b.converged) return a.converged;
@@ -24,13 +32,33 @@ void LoopCloserOptions::Validate() const {
   if (!(min_matching_ratio > 0 && min_matching_ratio <= 1)) {
     throw UsageError("loop closure: min_matching_ratio must be in (0, 1]");
   }
+  correlative.Validate();
+  if (!(wide_window_m > 0) || !(wide_window_rad > 0) || !(max_wide_window_m > 0) ||
+      !(max_wide_window_rad > 0) || wide_window_per_m < 0 || wide_window_rad_per_m < 0) {
+    throw UsageError("loop closure: wide search windows must be > 0");
+  }
+  if (!(min_wide_matching_ratio > 0 && min_wide_matching_ratio <= 1) ||
+      !(min_correlative_score >= 0 && min_correlative_score <= 1) || far_graph_distance_m < 0) {
+    throw UsageError(
+        "loop closure: min_wide_matching_ratio must be in (0, 1], min_correlative_score in "
+        "[0, 1], far_graph_distance_m >= 0");
+  }
 }
 
 LoopCloser::LoopCloser(const LoopCloserOptions& options) : options_(options) {
   options_.Validate();
 }
 
-LoopAttempt LoopCloser::TryClose(const KeyFrameMap& map, std::size_t current) const {
+LoopAttempt LoopCloser::TryClose(const KeyFrameMap& map, std::size_t current,
+                                 const std::vector<double>& graph_distance_m, bool wide) const {
+  LoopAttempt attempt = TryNearest(map, current, graph_distance_m);
+  if (attempt.verdict == LoopVerdict::kAccepted || !wide) return attempt;
+  LoopAttempt wide_attempt = TryWide(map, current, graph_distance_m);
+  return wide_attempt.verdict == LoopVerdict::kNoCandidate ? attempt : wide_attempt;
+}
+
+LoopAttempt LoopCloser::TryNearest(const KeyFrameMap& map, std::size_t current,
+                                   const std::vector<double>& graph_distance_m) const {
   const auto& frames = map.key_frames();
   const KeyFrame& now = frames[current];
   std::size_t best = 0;
@@ -45,15 +73,16 @@ LoopAttempt LoopCloser::TryClose(const KeyFrameMap& map, std::size_t current) co
     }
   }
   if (!std::isfinite(best_distance)) return {};
-  return TryCandidate(map, current, best);
+  const bool far =
+      GraphDistance(frames, current, best, graph_distance_m) >= options_.far_graph_distance_m;
+  return TryCandidate(map, current, best,
+                      far ? options_.min_wide_matching_ratio : options_.min_matching_ratio);
 }
 
 LoopAttempt LoopCloser::TryCandidate(const KeyFrameMap& map, std::size_t current,
-                                     std::size_t candidate) const {
+                                     std::size_t candidate, double min_ratio) const {
   const auto& frames = map.key_frames();
   const KeyFrame& now = frames[current];
-  LoopAttempt attempt;
-  attempt.candidate = candidate;
   // The submap stops short of the recent path, so the loop is checked against old map only.
   std::size_t last = std::min(candidate + options_.submap_half_window, current - 1);
   while (last > candidate &&
@@ -66,7 +95,7 @@ LoopAttempt LoopCloser::TryCandidate(const KeyFrameMap& map, std::size_t current
   const IcpTarget target(std::move(submap.points), std::move(submap.normals));
 
   IcpResult match = MatchIcp(now.points_base, target, now.T_world_base, options_.icp);
-  if (!(match.converged && match.inlier_ratio >= options_.min_matching_ratio)) {
+  if (!(match.converged && match.inlier_ratio >= min_ratio)) {
     // A small grid of initial guesses around the estimate (drift moved the old map), tried
     // with every third point; the best is refined with all of them.
     Points2 sparse;
@@ -91,19 +120,83 @@ LoopAttempt LoopCloser::TryCandidate(const KeyFrameMap& map, std::size_t current
       if (Better(refined, match)) match = refined;
     }
   }
+  return Judge(map, current, candidate, match, min_ratio, {});
+}
+
+LoopAttempt LoopCloser::TryWide(const KeyFrameMap& map, std::size_t current,
+                                const std::vector<double>& graph_distance_m) const {
+  const auto& frames = map.key_frames();
+  const KeyFrame& now = frames[current];
+  // Every earlier key frame whose view can overlap the scan within the drift it can have; the
+  // window covers the largest of those drifts.
+  std::vector<std::size_t> reachable;
+  double window_m = 0, window_rad = 0;
+  for (std::size_t j = 0; j < current; ++j) {
+    if (now.path_length_m - frames[j].path_length_m < options_.min_path_separation_m) break;
+    const double graph_m = GraphDistance(frames, current, j, graph_distance_m);
+    const double drift_m = std::min(options_.max_wide_window_m,
+                                    options_.wide_window_m + options_.wide_window_per_m * graph_m);
+    const double distance = std::hypot(frames[j].T_world_base.x_m - now.T_world_base.x_m,
+                                       frames[j].T_world_base.y_m - now.T_world_base.y_m);
+    if (drift_m < options_.min_wide_window_m || distance > drift_m + options_.search_radius_m) {
+      continue;
+    }
+    reachable.push_back(j);
+    window_m = std::max(window_m, drift_m);
+    window_rad = std::max(
+        window_rad, std::min(options_.max_wide_window_rad,
+                             options_.wide_window_rad + options_.wide_window_rad_per_m * graph_m));
+  }
+  if (reachable.empty()) return {};
+  MapPoints submap = map.WorldPoints(reachable);
+  const CorrelativeResult coarse = MatchCorrelative(
+      now.points_base, submap.points, now.T_world_base, window_m, window_rad, options_.correlative);
+  LoopAttempt attempt;
+  attempt.candidate = reachable.front();
+  if (!coarse.found || coarse.score < options_.min_correlative_score) {
+    attempt.verdict = LoopVerdict::kRejectedMatch;
+    return attempt;
+  }
+  const IcpTarget target(std::move(submap.points), std::move(submap.normals));
+  const IcpResult match = MatchIcp(now.points_base, target, coarse.T_target_source, options_.icp);
+  // The edge starts at the reachable key frame nearest to the matched pose.
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t j : reachable) {
+    const double distance = std::hypot(frames[j].T_world_base.x_m - match.T_target_source.x_m,
+                                       frames[j].T_world_base.y_m - match.T_target_source.y_m);
+    if (distance < nearest) {
+      nearest = distance;
+      attempt.candidate = j;
+    }
+  }
+  return Judge(map, current, attempt.candidate, match, options_.min_wide_matching_ratio,
+               {window_m, window_m, window_rad});
+}
+
+LoopAttempt LoopCloser::Judge(const KeyFrameMap& map, std::size_t current, std::size_t candidate,
+                              const IcpResult& match, double min_ratio,
+                              const PlanarPose& window) const {
+  const auto& frames = map.key_frames();
+  const KeyFrame& now = frames[current];
+  LoopAttempt attempt;
+  attempt.candidate = candidate;
   attempt.match = match;
-  if (!match.converged || match.inlier_ratio < options_.min_matching_ratio ||
+  if (!match.converged || match.inlier_ratio < min_ratio ||
       match.rms_residual_m > options_.max_rms_residual_m) {
     attempt.verdict = LoopVerdict::kRejectedMatch;
     return attempt;
   }
-  // Agreement with the graph: the correction must be explainable by tracking drift.
+  // Agreement with the graph: the correction must be explainable by tracking drift (for a wide
+  // match: lie in the window searched, which the drift bounds, plus ICP's last step).
   const double path = now.path_length_m - frames[candidate].path_length_m;
   const PlanarPose correction = Between(now.T_world_base, match.T_target_source);
-  if (std::hypot(correction.x_m, correction.y_m) >
-          options_.max_correction_m + options_.max_correction_per_m * path ||
-      std::abs(correction.theta_rad) >
-          options_.max_correction_rad + options_.max_correction_rad_per_m * path) {
+  const double max_m = std::max(options_.max_correction_m + options_.max_correction_per_m * path,
+                                std::sqrt(2.0) * window.x_m + options_.correlative.cell_size_m);
+  const double max_rad =
+      std::max(options_.max_correction_rad + options_.max_correction_rad_per_m * path,
+               window.theta_rad + options_.guess_step_rad);
+  if (std::hypot(correction.x_m, correction.y_m) > max_m ||
+      std::abs(correction.theta_rad) > max_rad) {
     attempt.verdict = LoopVerdict::kRejectedDisagreement;
     return attempt;
   }

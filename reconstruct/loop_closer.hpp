@@ -1,7 +1,13 @@
 #pragma once
 // Loop closure over key frames (littermap's answer to the drift thesis 2.3 leaves open): a new
 // key frame is matched against a submap of earlier key frames that lie within a search radius of
-// it and far enough back along the path. A match becomes a loop edge only if it passes checks
+// it and far enough back along the path. Far along the pose graph from the current key frame (a
+// long excursion, no loop in between) the drift can exceed what ICP's basin of attraction and the
+// search radius cover, so a wide search also runs (at most every few metres): a correlative match
+// over a window as large as the drift can be, against all earlier key frames within reach, refined
+// by ICP. Such matches, and any loop to a key frame far along the graph, need a higher matching
+// ratio: a wide window offers more places that only resemble the old one (a facade slid along
+// itself, a row of trees). A match becomes a loop edge only if it passes checks
 // that reject false loops before they can be optimised in:
 //   - ICP converged with a high matching ratio and a small residual;
 //   - the correction it implies agrees with the graph: no larger than the drift the tracker can
@@ -10,7 +16,9 @@
 
 #include <cstddef>
 #include <optional>
+#include <vector>
 
+#include "reconstruct/correlative_matcher.hpp"
 #include "reconstruct/icp_matcher.hpp"
 #include "reconstruct/keyframe_map.hpp"
 #include "reconstruct/pose_graph.hpp"
@@ -32,6 +40,19 @@ struct LoopCloserOptions {
   // Initial guesses around the estimate when the match from the estimate fails.
   double guess_step_m = 0.75;
   double guess_step_rad = 0.12;
+  // The wide search: its window grows with the distance along the pose graph between the key
+  // frames (the drift the tracker can have gathered between them), up to a limit.
+  CorrelativeOptions correlative;
+  double min_wide_window_m = 2;  // smaller drift: the nearest-candidate search covers it
+  double wide_window_m = 0.5;
+  double wide_window_per_m = 0.03;
+  double max_wide_window_m = 15;
+  double wide_window_rad = 0.05;
+  double wide_window_rad_per_m = 0.0006;
+  double max_wide_window_rad = 0.35;
+  double min_correlative_score = 0.4;     // mean likelihood of the scan on the old map
+  double min_wide_matching_ratio = 0.85;  // for wide matches and far candidates
+  double far_graph_distance_m = 300;      // a candidate this far along the graph is "far"
   void Validate() const;
 };
 
@@ -47,13 +68,27 @@ struct LoopAttempt {
 class LoopCloser {
  public:
   explicit LoopCloser(const LoopCloserOptions& options);
-  // Tries to close a loop from key frame `current` to an earlier key frame.
-  LoopAttempt TryClose(const KeyFrameMap& map, std::size_t current) const;
-  // Matches key frame `current` against the submap around `candidate` and applies the checks.
-  LoopAttempt TryCandidate(const KeyFrameMap& map, std::size_t current,
-                           std::size_t candidate) const;
+  // Tries to close a loop from key frame `current` to an earlier key frame; with `wide` the wide
+  // search too. graph_distance_m: per key frame, its distance from `current` along the pose
+  // graph; empty means along the path (no loops yet).
+  LoopAttempt TryClose(const KeyFrameMap& map, std::size_t current,
+                       const std::vector<double>& graph_distance_m = {}, bool wide = false) const;
 
  private:
+  // Matches key frame `current` against the submap around `candidate` and applies the checks.
+  LoopAttempt TryCandidate(const KeyFrameMap& map, std::size_t current, std::size_t candidate,
+                           double min_ratio) const;
+  // The wide search around key frame `current`.
+  LoopAttempt TryWide(const KeyFrameMap& map, std::size_t current,
+                      const std::vector<double>& graph_distance_m) const;
+  // Matches against the submap around the earlier key frame nearest to `current`.
+  LoopAttempt TryNearest(const KeyFrameMap& map, std::size_t current,
+                         const std::vector<double>& graph_distance_m) const;
+  // The verdict on a match of key frame `current` that an edge from `candidate` would carry;
+  // `window`: the half-widths a wide search covered (zero for the nearest-candidate search).
+  LoopAttempt Judge(const KeyFrameMap& map, std::size_t current, std::size_t candidate,
+                    const IcpResult& match, double min_ratio, const PlanarPose& window) const;
+
   LoopCloserOptions options_;
 };
 

@@ -2,8 +2,12 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <numbers>
+#include <queue>
 #include <string>
+#include <utility>
 
 #include <ceres/ceres.h>
 #include <Eigen/Cholesky>
@@ -124,6 +128,35 @@ Eigen::Matrix3d EdgeInformation(const Eigen::Matrix3d& information_world, double
                                 sigma_floor_rad * sigma_floor_rad)
                     .asDiagonal();
   return covariance.inverse();
+}
+
+std::vector<double> GraphDistances(std::size_t poses, const std::vector<PoseGraphEdge>& edges,
+                                   std::size_t source) {
+  std::vector<std::vector<std::pair<std::size_t, double>>> adjacent(poses);
+  for (const PoseGraphEdge& edge : edges) {
+    if (edge.from >= poses || edge.to >= poses) continue;
+    const double length = std::hypot(edge.T_from_to.x_m, edge.T_from_to.y_m);
+    adjacent[edge.from].emplace_back(edge.to, length);
+    adjacent[edge.to].emplace_back(edge.from, length);
+  }
+  std::vector<double> distance(poses, std::numeric_limits<double>::infinity());
+  if (source >= poses) return distance;
+  using Entry = std::pair<double, std::size_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+  distance[source] = 0;
+  queue.emplace(0.0, source);
+  while (!queue.empty()) {  // Dijkstra
+    const auto [d, node] = queue.top();
+    queue.pop();
+    if (d > distance[node]) continue;
+    for (const auto& [next, length] : adjacent[node]) {
+      if (d + length < distance[next]) {
+        distance[next] = d + length;
+        queue.emplace(distance[next], next);
+      }
+    }
+  }
+  return distance;
 }
 
 double EdgeChi2(const std::vector<PlanarPose>& poses, const PoseGraphEdge& edge) {

@@ -49,6 +49,11 @@ PoseGraphResult OptimizePoseGraph(std::vector<PlanarPose>* poses,
 Eigen::Matrix3d EdgeInformation(const Eigen::Matrix3d& information_world, double theta_from_rad,
                                 double sigma_floor_m, double sigma_floor_rad);
 
+// Distance of every pose from `source` along the graph's edges (shortest path, each edge as long
+// as its translation); infinity for poses it does not reach.
+std::vector<double> GraphDistances(std::size_t poses, const std::vector<PoseGraphEdge>& edges,
+                                   std::size_t source);
+
 // r^T I r of one edge at the given poses (chi-squared with 3 degrees of freedom if the
 // information is right).
 double EdgeChi2(const std::vector<PlanarPose>& poses, const PoseGraphEdge& edge);

@@ -1,5 +1,6 @@
 #include "reconstruct/reconstruction.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <optional>
@@ -13,6 +14,11 @@ namespace {
 
 double Yaw(const msg::Quaternion& q) {
   return std::atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z));
+}
+
+Tilt TiltOf(const msg::Quaternion& q) {  // roll and pitch of a ZYX (yaw-pitch-roll) rotation
+  return {std::atan2(2 * (q.w * q.x + q.y * q.z), 1 - 2 * (q.x * q.x + q.y * q.y)),
+          std::asin(std::clamp(2 * (q.w * q.y - q.z * q.x), -1.0, 1.0))};
 }
 
 TimestampNs StampOf(const msg::Header& header) {
@@ -50,7 +56,8 @@ void ReconstructionOptions::Validate() const {
 
 PlanarPose ReadLaserExtrinsic(const std::filesystem::path& bag,
                               const ReconstructionOptions& options,
-                              std::vector<std::string>* warnings) {
+                              std::vector<std::string>* warnings, double* height_m) {
+  if (height_m != nullptr) *height_m = 0;
   BagReader reader(bag);
   reader.SetTopicFilter({options.tf_static_topic});
   MessageStream stream(reader);
@@ -59,6 +66,7 @@ PlanarPose ReadLaserExtrinsic(const std::filesystem::path& bag,
     if (tf == nullptr) continue;
     for (const auto& transform : tf->transforms) {
       if (transform.child_frame_id != frames::kLaser) continue;
+      if (height_m != nullptr) *height_m = transform.transform.translation.z;
       return {transform.transform.translation.x, transform.transform.translation.y,
               Yaw(transform.transform.rotation)};
     }
@@ -81,9 +89,10 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
   for (const auto& info : reader.info().topics) {
     if (info.name == options.scan_topic) total = info.message_count;
   }
-  reader.SetTopicFilter({options.scan_topic, options.odometry_topic});
+  reader.SetTopicFilter({options.scan_topic, options.odometry_topic, options.imu_topic});
   MessageStream stream(reader);
   std::optional<std::pair<TimestampNs, PlanarPose>> odometry;
+  std::optional<std::pair<TimestampNs, Tilt>> tilt;
   std::uint64_t done = 0;
   const std::string task = "reconstructing " + bag.filename().string();
   while (auto message = stream.Next()) {
@@ -91,6 +100,10 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
       const auto& pose = odom->pose.pose;
       odometry.emplace(StampOf(odom->header),
                        PlanarPose{pose.position.x, pose.position.y, Yaw(pose.orientation)});
+      continue;
+    }
+    if (const auto* imu = std::get_if<msg::Imu>(&message->message)) {
+      tilt.emplace(StampOf(imu->header), TiltOf(imu->orientation));
       continue;
     }
     const auto* laser = std::get_if<msg::LaserScan>(&message->message);
@@ -101,7 +114,11 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
         std::abs(ToSeconds(scan.stamp_ns - odometry->first)) <= options.max_odometry_age_s) {
       T_odom_base = odometry->second;
     }
-    pipeline->AddScan(scan, T_odom_base);
+    std::optional<Tilt> scan_tilt;
+    if (tilt && std::abs(ToSeconds(scan.stamp_ns - tilt->first)) <= options.max_odometry_age_s) {
+      scan_tilt = tilt->second;
+    }
+    pipeline->AddScan(scan, T_odom_base, scan_tilt);
     if (++done % 50 == 0) ReportProgress(progress, {task, done, total});
   }
   ReportProgress(progress, {task, done, total});

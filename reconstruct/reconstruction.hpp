@@ -16,6 +16,7 @@ struct ReconstructionOptions {
   std::string scan_topic = topics::kScan;
   std::string odometry_topic = topics::kOdometry;
   std::string tf_static_topic = topics::kTfStatic;
+  std::string imu_topic = topics::kImu;  // tilt for the ground-hit filter, if recorded
   // Odometry older than this at a scan's time counts as missing.
   double max_odometry_age_s = 0.2;
   SlamOptions slam;
@@ -34,9 +35,10 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
                                     const ReconstructionOptions& options, SlamPipeline* pipeline,
                                     const ProgressCallback& progress);
 
-// The laser extrinsic from the bag's /tf_static (identity with a warning if absent).
+// The laser extrinsic from the bag's /tf_static (identity with a warning if absent); its
+// height above base_link into *height_m when given (0 if absent).
 PlanarPose ReadLaserExtrinsic(const std::filesystem::path& bag,
                               const ReconstructionOptions& options,
-                              std::vector<std::string>* warnings);
+                              std::vector<std::string>* warnings, double* height_m = nullptr);
 
 }  // namespace littermap::reconstruct

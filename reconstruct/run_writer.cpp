@@ -31,6 +31,7 @@ std::string QualityJson(const SlamQuality& quality, const ReconstructionResult& 
   json["scans"] = quality.scans_in;
   json["scans_tracked"] = quality.scans_tracked;
   json["scans_without_echoes"] = quality.scans_without_echoes;
+  json["ground_echoes_dropped"] = quality.ground_echoes;
   json["stamps_backwards"] = quality.stamps_backwards;
   json["stamps_duplicate"] = quality.stamps_duplicate;
   json["odometry_missing"] = quality.odometry_missing;

@@ -14,10 +14,18 @@ void ScanPointsOptions::Validate() const {
     throw UsageError("scan points: need 0 <= min_range_m < max_range_m, got " +
                      std::to_string(min_range_m) + ", " + std::to_string(max_range_m));
   }
+  if (!(laser_height_m >= 0) || !(ground_range_fraction > 0 && ground_range_fraction <= 1)) {
+    throw UsageError("scan points: need laser_height_m >= 0 and ground_range_fraction in (0, 1]");
+  }
 }
 
 ScanPoints ScanToPoints(const LaserScan& scan, const PlanarPose& T_base_laser,
-                        const ScanPointsOptions& options) {
+                        const ScanPointsOptions& options, const std::optional<Tilt>& tilt) {
+  const bool ground_filter = tilt && options.laser_height_m > 0;
+  // Vertical component of a horizontal beam at heading a in base_link after the tilt
+  // R = Ry(pitch) Rx(roll): -sin(pitch) cos(a) + cos(pitch) sin(roll) sin(a).
+  const double down_x = ground_filter ? -std::sin(tilt->pitch_rad) : 0;
+  const double down_y = ground_filter ? std::cos(tilt->pitch_rad) * std::sin(tilt->roll_rad) : 0;
   ScanPoints result;
   result.beams = scan.ranges_m.size();
   result.points_base.reserve(scan.ranges_m.size());
@@ -28,6 +36,14 @@ ScanPoints ScanToPoints(const LaserScan& scan, const PlanarPose& T_base_laser,
     // "r < max_range" rejects NaN too; a reading at range_max means no echo (REP 117, CARMEN).
     if (!(r >= min_range && r < max_range)) continue;
     const double angle = scan.AngleOf(i);
+    if (ground_filter) {
+      const double heading = angle + T_base_laser.theta_rad;
+      const double vertical = down_x * std::cos(heading) + down_y * std::sin(heading);
+      if (vertical < 0 && r >= options.ground_range_fraction * options.laser_height_m / -vertical) {
+        ++result.ground_beams;
+        continue;
+      }
+    }
     result.points_base.push_back(
         Transform(T_base_laser, Eigen::Vector2d(r * std::cos(angle), r * std::sin(angle))));
     ++result.valid_beams;

@@ -15,6 +15,13 @@ Eigen::Matrix3d DiagonalInformation(double sigma_m, double sigma_rad) {
       .asDiagonal();
 }
 
+bool LoopFits(const PoseGraphEdge& edge, const std::vector<PlanarPose>& poses,
+              const SlamOptions& options) {
+  const PlanarPose residual = Between(edge.T_from_to, Between(poses[edge.from], poses[edge.to]));
+  return std::hypot(residual.x_m, residual.y_m) <= options.max_loop_residual_m &&
+         std::abs(residual.theta_rad) <= options.max_loop_residual_rad;
+}
+
 }  // namespace
 
 void SlamOptions::Validate() const {
@@ -31,6 +38,9 @@ void SlamOptions::Validate() const {
   if (!(max_loop_residual_m > 0) || !(max_loop_residual_rad > 0)) {
     throw UsageError("slam: loop residual limits must be > 0");
   }
+  if (!(wide_loop_search_every_m > 0)) {
+    throw UsageError("slam: wide_loop_search_every_m must be > 0");
+  }
 }
 
 SlamPipeline::SlamPipeline(const SlamOptions& options, const PlanarPose& T_base_laser,
@@ -42,7 +52,8 @@ SlamPipeline::SlamPipeline(const SlamOptions& options, const PlanarPose& T_base_
       loop_closer_(options.loops),
       grid_(options.grid) {}
 
-void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<PlanarPose>& T_odom_base) {
+void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<PlanarPose>& T_odom_base,
+                           const std::optional<Tilt>& tilt) {
   ++quality_.scans_in;
   if (last_stamp_ns_ && scan.stamp_ns < *last_stamp_ns_) {
     ++quality_.stamps_backwards;  // a TUM trajectory cannot go back in time: drop the scan
@@ -53,7 +64,8 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<PlanarPose
     return;
   }
   last_stamp_ns_ = scan.stamp_ns;
-  ScanPoints points = ScanToPoints(scan, T_base_laser_, options_.points);
+  ScanPoints points = ScanToPoints(scan, T_base_laser_, options_.points, tilt);
+  quality_.ground_echoes += points.ground_beams;
   TrackInput input;
   input.stamp_ns = scan.stamp_ns;
   input.T_odom_base = T_odom_base;
@@ -77,7 +89,10 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<PlanarPose
   record.T_world_base = step.T_world_base;
   record.T_odom_base = T_odom_base;
   scans_.push_back(record);
-  scan_points_base_.push_back(std::move(points.points_base));
+  std::vector<Eigen::Vector2f>& map_points = map_points_base_.emplace_back();
+  for (const Eigen::Vector2d& p : VoxelDownsample(points.points_base, options_.grid.cell_size_m)) {
+    map_points.push_back(p.cast<float>());
+  }
   if (step.new_key_frame && step.key_frame > 0) {
     AddGraphEdge(step);
     if (options_.loop_closure) CloseLoops(step.key_frame);
@@ -100,7 +115,11 @@ void SlamPipeline::AddGraphEdge(const TrackStep& step) {
 
 void SlamPipeline::CloseLoops(std::size_t key_frame) {
   if (any_loop_ && key_frame < last_loop_key_frame_ + options_.loop_cooldown_key_frames) return;
-  const LoopAttempt attempt = loop_closer_.TryClose(map_, key_frame);
+  const double path_m = map_.key_frames()[key_frame].path_length_m;
+  const bool wide = path_m - last_wide_search_path_m_ >= options_.wide_loop_search_every_m;
+  if (wide) last_wide_search_path_m_ = path_m;
+  const LoopAttempt attempt = loop_closer_.TryClose(
+      map_, key_frame, GraphDistances(map_.key_frames().size(), edges_, key_frame), wide);
   switch (attempt.verdict) {
     case LoopVerdict::kNoCandidate:
       return;
@@ -137,9 +156,7 @@ void SlamPipeline::Optimise() {
   bool removed = false;
   for (std::size_t index : unchecked_loops_) {
     PoseGraphEdge& edge = edges_[index];
-    const PlanarPose residual = Between(edge.T_from_to, Between(poses[edge.from], poses[edge.to]));
-    if (!result.usable || std::hypot(residual.x_m, residual.y_m) > options_.max_loop_residual_m ||
-        std::abs(residual.theta_rad) > options_.max_loop_residual_rad) {
+    if (!result.usable || !LoopFits(edge, poses, options_)) {
       edge.information.setZero();  // marked for removal
       removed = true;
       ++quality_.loops_rejected_after_optimisation;
@@ -172,8 +189,9 @@ void SlamPipeline::Finish() {
     record.T_world_base = Compose(frames[record.key_frame].T_world_base, record.T_keyframe_base);
     const PlanarPose T_world_laser = Compose(record.T_world_base, T_base_laser_);
     Points2 hits;
-    hits.reserve(scan_points_base_[i].size());
-    for (const Eigen::Vector2d& p : scan_points_base_[i]) {
+    hits.reserve(map_points_base_[i].size());
+    for (const Eigen::Vector2f& point : map_points_base_[i]) {
+      const Eigen::Vector2d p = point.cast<double>();
       const Eigen::Vector2d from_laser = p - Eigen::Vector2d(T_base_laser_.x_m, T_base_laser_.y_m);
       if (from_laser.squaredNorm() <= max_range_sq)
         hits.push_back(Transform(record.T_world_base, p));

@@ -37,6 +37,7 @@ struct SlamOptions {
   double odometry_sigma_rad = 0.05;
   bool loop_closure = true;
   std::size_t loop_cooldown_key_frames = 3;  // after an accepted loop
+  double wide_loop_search_every_m = 8;       // path between two wide loop searches
   // An optimised loop edge further than this from its measurement did not fit the graph.
   double max_loop_residual_m = 0.2;
   double max_loop_residual_rad = 0.05;
@@ -58,6 +59,7 @@ struct SlamQuality {
   std::size_t scans_in = 0;
   std::size_t scans_tracked = 0;
   std::size_t scans_without_echoes = 0;         // too few valid ranges (all max-range / NaN)
+  std::size_t ground_echoes = 0;                // dropped as ground hits of a tilted scanner
   std::size_t stamps_backwards = 0;             // dropped
   std::size_t stamps_duplicate = 0;             // dropped
   std::size_t odometry_missing = 0;             // constant-velocity prediction used
@@ -78,7 +80,9 @@ class SlamPipeline {
   SlamPipeline(const SlamOptions& options, const PlanarPose& T_base_laser,
                RgbdFallback* rgbd = nullptr);
 
-  void AddScan(const LaserScan& scan, const std::optional<PlanarPose>& T_odom_base);
+  // tilt: the base's roll and pitch at the scan's time (IMU), if known.
+  void AddScan(const LaserScan& scan, const std::optional<PlanarPose>& T_odom_base,
+               const std::optional<Tilt>& tilt = std::nullopt);
   // Final optimisation; fills the scans' final poses and renders the map.
   void Finish();
 
@@ -101,9 +105,12 @@ class SlamPipeline {
   std::vector<PoseGraphEdge> edges_;
   std::vector<std::size_t> unchecked_loops_;  // indices into edges_ since the last optimisation
   std::vector<ScanRecord> scans_;
-  std::vector<Points2> scan_points_base_;  // full resolution, for the map
+  // Every scan's points for the map, one per map cell and in single precision: a 15-minute run
+  // at 40 Hz keeps 34 000 scans until the end (440 MB at full resolution in double).
+  std::vector<std::vector<Eigen::Vector2f>> map_points_base_;
   std::size_t last_loop_key_frame_ = 0;
   bool any_loop_ = false;
+  double last_wide_search_path_m_ = 0;  // path length at the last wide loop search
   std::optional<TimestampNs> last_stamp_ns_;
   SlamQuality quality_;
 };

@@ -80,6 +80,24 @@ TEST(TrajectoryMetrics, HeadingDriftGivesKnownRotationError) {
   EXPECT_LT(metrics.ate_rmse_m, 1e-9);  // positions agree exactly
 }
 
+TEST(TrajectoryMetrics, RpeComposesTheErrorLikeEvaluateRpePy) {
+  // Straight line, exact positions, heading drifting 0.001 rad per pose. For the pair (i, j = i +
+  // 10) the estimate's relative motion is A = (R(0.01), R(-0.001 i) (1, 0)) and the reference's
+  // B = (I, (1, 0)). evaluate_rpe.py's error A * inv(B) has translation t_A - R_A t_B, of length
+  // 2 sin((0.01 + 0.001 i) / 2); inv(B) * A (the other order) would give 2 sin(0.0005 i).
+  std::vector<StampedPose> reference, estimate;
+  for (int i = 0; i < 200; ++i) {
+    reference.push_back(Pose(i * 0.1, i * 0.1, 0, 0));
+    estimate.push_back(Pose(i * 0.1, i * 0.1, 0, 0.001 * i));
+  }
+  const TrajectoryMetrics metrics = EvaluateTrajectory(estimate, reference, {});
+  double expected = 0;
+  std::size_t pairs = 0;
+  for (int i = 0; i + 10 < 199; ++i, ++pairs) expected += 2 * std::sin((0.01 + 0.001 * i) / 2);
+  ASSERT_EQ(metrics.rpe_pairs, pairs);
+  EXPECT_NEAR(metrics.rpe_trans_mean_m, expected / static_cast<double>(pairs), 1e-6);
+}
+
 TEST(TrajectoryMetrics, AssociationIsGreedyByTimeDifferenceLikeAssociatePy) {
   // associate.py: candidates sorted by |a - b|, each stamp used once, |a - b| < max strictly.
   const std::vector<StampedPose> estimate = {Pose(0.000, 0, 0, 0), Pose(0.010, 0, 0, 0),

@@ -1,10 +1,12 @@
-// Loop closure: a true revisit is accepted with the right correction; a false candidate (a
-// different place) is rejected, not added to the graph.
+// Loop closure: a true revisit is accepted with the right correction, also after drift beyond
+// ICP's reach (the wide search); a false candidate (a different place) is rejected, not added to
+// the graph; far along the graph a loop needs a higher matching ratio.
 
 #include "reconstruct/loop_closer.hpp"
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -69,6 +71,52 @@ TEST(LoopCloser, FalseCandidateIsRejected) {
   EXPECT_NE(attempt.verdict, LoopVerdict::kAccepted);
   EXPECT_NE(attempt.verdict, LoopVerdict::kNoCandidate);
   EXPECT_FALSE(attempt.edge.has_value());
+}
+
+// Distance of every key frame from the last along the pose graph, as if no loop had been closed
+// for a long excursion.
+std::vector<double> FarAlongTheGraph(const KeyFrameMap& map, double distance_m) {
+  std::vector<double> distances(map.key_frames().size(), distance_m);
+  distances.back() = 0;
+  return distances;
+}
+
+TEST(LoopCloser, WideSearchFindsARevisitBeyondIcpReach) {
+  // 2.9 m and 8.6 degrees of drift after a long excursion: outside ICP's basin and the guesses
+  // of the nearest-candidate search, inside the correlative window for 300 m along the graph.
+  const auto room = testing::Room();
+  const PlanarPose drift{2.5, -1.5, 0.15};
+  const KeyFrameMap map = MapWithRevisit(room, room, drift);
+  const std::size_t last = map.key_frames().size() - 1;
+  const std::vector<double> graph = FarAlongTheGraph(map, 300);
+  const LoopCloser closer({});
+  EXPECT_NE(closer.TryClose(map, last, graph, /*wide=*/false).verdict, LoopVerdict::kAccepted);
+  const LoopAttempt attempt = closer.TryClose(map, last, graph, /*wide=*/true);
+  ASSERT_EQ(attempt.verdict, LoopVerdict::kAccepted);
+  const PlanarPose T_world_last =
+      Compose(map.key_frames()[attempt.edge->from].T_world_base, attempt.edge->T_from_to);
+  EXPECT_NEAR(T_world_last.x_m, 2.2, 0.01);
+  EXPECT_NEAR(T_world_last.y_m, 2.1, 0.01);
+  EXPECT_NEAR(T_world_last.theta_rad, 0.05, 0.005);
+}
+
+TEST(LoopCloser, FarCandidateNeedsMoreEvidence) {
+  // The right place, but a screen right in front of the robot hides a quarter of the room: a
+  // matching ratio good enough for a loop close along the graph (small drift, little room for
+  // a look-alike), not for one far along it, where a place that only resembles the old one
+  // (a facade slid along itself) is likelier: the false loop of freiburg-campus, seed 2.
+  const auto room = testing::Room();
+  auto cluttered = room;
+  cluttered.push_back({{3.2, 1.0}, {3.2, 3.4}});
+  const KeyFrameMap map = MapWithRevisit(room, cluttered, {0.1, -0.05, 0.01});
+  const std::size_t last = map.key_frames().size() - 1;
+  const LoopCloser closer({});
+  const LoopAttempt near = closer.TryClose(map, last, FarAlongTheGraph(map, 40));
+  ASSERT_EQ(near.verdict, LoopVerdict::kAccepted);
+  EXPECT_LT(near.match.inlier_ratio, LoopCloserOptions{}.min_wide_matching_ratio);
+  const LoopAttempt far = closer.TryClose(map, last, FarAlongTheGraph(map, 400));
+  EXPECT_EQ(far.verdict, LoopVerdict::kRejectedMatch);
+  EXPECT_FALSE(far.edge.has_value());
 }
 
 TEST(LoopCloser, CorrectionBeyondPlausibleDriftIsRejected) {
