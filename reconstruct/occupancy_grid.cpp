@@ -73,6 +73,10 @@ void OccupancyGrid::Grow(CellIndex low, CellIndex high) {
   height_ = new_height;
 }
 
+void OccupancyGrid::Cover(const Eigen::Vector2d& low, const Eigen::Vector2d& high) {
+  if (low.x() <= high.x() && low.y() <= high.y()) Grow(CellOf(low), CellOf(high));
+}
+
 void OccupancyGrid::InsertScan(const Eigen::Vector2d& origin, const Points2& hits) {
   if (hits.empty()) return;
   CellIndex low = CellOf(origin), high = low;

@@ -81,6 +81,9 @@ class OccupancyGrid {
 
   // Adds one scan: origin = laser position in the world, hits = echo points in the world.
   void InsertScan(const Eigen::Vector2d& origin, const Points2& hits);
+  // Makes the grid cover the box [low, high] (world, metres) at once: growing scan by scan
+  // copies a large map each time the robot drives past its edge.
+  void Cover(const Eigen::Vector2d& low, const Eigen::Vector2d& high);
 
   CellIndex CellOf(const Eigen::Vector2d& p) const;
   float LogOdds(CellIndex cell) const;  // 0 outside the grid
