@@ -4,6 +4,7 @@
 # `littermap eval trajectory` (ATE RMSE after Horn alignment, RPE over 1 m pairs).
 # Prints one table row per log x seed: odometry ATE, littermap ATE, RPE, loops, scans/s.
 #   bench/slam_carmen.sh [LITTERMAP] [WORK_DIR] [LOG_NAME...]
+# SEEDS="1 2 3" picks the odometry noise seeds, OPTIONS=FILE.yaml passes reconstruct --options.
 # A benchmark, not a test: it prints, it does not assert.
 set -euo pipefail
 
@@ -17,6 +18,8 @@ if [[ ${#logs[@]} -eq 0 ]]; then
   logs=(aces intel csail freiburg-campus seattle orebro freiburg-101 edmonton acapulco)
 fi
 seeds=${SEEDS:-"1 2 3"}
+options=()
+if [[ -n ${OPTIONS:-} ]]; then options=(--options "$OPTIONS"); fi
 mkdir -p "$work"
 
 field() {  # field JSON_FILE KEY
@@ -35,7 +38,7 @@ for log in "${logs[@]}"; do
         --reference "$ref" --odometry-noise "$seed" >/dev/null
     fi
     rm -rf "$run"
-    "$littermap" -q reconstruct "$bag" -o "$run" >/dev/null 2>"$run.stderr" || {
+    "$littermap" -q reconstruct "$bag" -o "$run" "${options[@]}" >/dev/null 2>"$run.stderr" || {
       echo "$log $seed: reconstruct failed: $(cat "$run.stderr")"; continue; }
     "$littermap" eval trajectory "$run/odometry.tum" "$ref" --json >"$run/odometry_eval.json"
     "$littermap" eval trajectory "$run/trajectory.tum" "$ref" --json >"$run/eval.json"

@@ -79,6 +79,20 @@ LoopAttempt LoopCloser::TryNearest(const KeyFrameMap& map, std::size_t current,
                       far ? options_.min_wide_matching_ratio : options_.min_matching_ratio);
 }
 
+Points2 LoopCloser::SourcePoints(const KeyFrameMap& map, std::size_t current) const {
+  const auto& frames = map.key_frames();
+  const KeyFrame& now = frames[current];
+  if (now.points_base.size() >= options_.min_source_points) return now.points_base;
+  Points2 points = now.points_base;
+  const PlanarPose T_base_world = Inverse(now.T_world_base);
+  for (std::size_t j = current; j-- > 0 && points.size() < options_.min_source_points;) {
+    if (now.path_length_m - frames[j].path_length_m > options_.max_source_path_m) break;
+    const PlanarPose T_now_j = Compose(T_base_world, frames[j].T_world_base);
+    for (const Eigen::Vector2d& p : frames[j].points_base) points.push_back(Transform(T_now_j, p));
+  }
+  return VoxelDownsample(points, options_.source_voxel_size_m);
+}
+
 LoopAttempt LoopCloser::TryCandidate(const KeyFrameMap& map, std::size_t current,
                                      std::size_t candidate, double min_ratio) const {
   const auto& frames = map.key_frames();
@@ -94,13 +108,13 @@ LoopAttempt LoopCloser::TryCandidate(const KeyFrameMap& map, std::size_t current
   MapPoints submap = map.WorldPoints(first, last);
   const IcpTarget target(std::move(submap.points), std::move(submap.normals));
 
-  IcpResult match = MatchIcp(now.points_base, target, now.T_world_base, options_.icp);
+  const Points2 source = SourcePoints(map, current);
+  IcpResult match = MatchIcp(source, target, now.T_world_base, options_.icp);
   if (!(match.converged && match.inlier_ratio >= min_ratio)) {
     // A small grid of initial guesses around the estimate (drift moved the old map), tried
     // with every third point; the best is refined with all of them.
     Points2 sparse;
-    for (std::size_t i = 0; i < now.points_base.size(); i += 3)
-      sparse.push_back(now.points_base[i]);
+    for (std::size_t i = 0; i < source.size(); i += 3) sparse.push_back(source[i]);
     IcpResult best_sparse;
     for (int ix = -1; ix <= 1; ++ix) {
       for (int iy = -1; iy <= 1; ++iy) {
@@ -116,7 +130,7 @@ LoopAttempt LoopCloser::TryCandidate(const KeyFrameMap& map, std::size_t current
     }
     if (best_sparse.converged) {
       const IcpResult refined =
-          MatchIcp(now.points_base, target, best_sparse.T_target_source, options_.icp);
+          MatchIcp(source, target, best_sparse.T_target_source, options_.icp);
       if (Better(refined, match)) match = refined;
     }
   }
@@ -149,8 +163,9 @@ LoopAttempt LoopCloser::TryWide(const KeyFrameMap& map, std::size_t current,
   }
   if (reachable.empty()) return {};
   MapPoints submap = map.WorldPoints(reachable);
+  const Points2 source = SourcePoints(map, current);
   const CorrelativeResult coarse = MatchCorrelative(
-      now.points_base, submap.points, now.T_world_base, window_m, window_rad, options_.correlative);
+      source, submap.points, now.T_world_base, window_m, window_rad, options_.correlative);
   LoopAttempt attempt;
   attempt.candidate = reachable.front();
   if (!coarse.found || coarse.score < options_.min_correlative_score) {
@@ -158,7 +173,7 @@ LoopAttempt LoopCloser::TryWide(const KeyFrameMap& map, std::size_t current,
     return attempt;
   }
   const IcpTarget target(std::move(submap.points), std::move(submap.normals));
-  const IcpResult match = MatchIcp(now.points_base, target, coarse.T_target_source, options_.icp);
+  const IcpResult match = MatchIcp(source, target, coarse.T_target_source, options_.icp);
   // The edge starts at the reachable key frame nearest to the matched pose.
   double nearest = std::numeric_limits<double>::infinity();
   for (std::size_t j : reachable) {

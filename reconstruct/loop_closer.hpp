@@ -53,6 +53,12 @@ struct LoopCloserOptions {
   double min_correlative_score = 0.4;     // mean likelihood of the scan on the old map
   double min_wide_matching_ratio = 0.85;  // for wide matches and far candidates
   double far_graph_distance_m = 300;      // a candidate this far along the graph is "far"
+  // A key frame with fewer points than this (a few trunks in a park) is matched together with
+  // the key frames just before it, up to this far back along the path: their relative poses
+  // are accurate, and together they pin the pose down where one sparse scan cannot.
+  std::size_t min_source_points = 150;
+  double max_source_path_m = 5;
+  double source_voxel_size_m = 0.05;
   void Validate() const;
 };
 
@@ -78,6 +84,8 @@ class LoopCloser {
   // Matches key frame `current` against the submap around `candidate` and applies the checks.
   LoopAttempt TryCandidate(const KeyFrameMap& map, std::size_t current, std::size_t candidate,
                            double min_ratio) const;
+  // The points matched for key frame `current`, in its base frame (see min_source_points).
+  Points2 SourcePoints(const KeyFrameMap& map, std::size_t current) const;
   // The wide search around key frame `current`.
   LoopAttempt TryWide(const KeyFrameMap& map, std::size_t current,
                       const std::vector<double>& graph_distance_m) const;

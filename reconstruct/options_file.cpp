@@ -37,6 +37,16 @@ const std::map<std::string, Setter>& Setters() {
        Set<double>([](O& o) -> double& { return o.slam.tracker.min_matching_ratio; })},
       {"min_buffer_matching_ratio",
        Set<double>([](O& o) -> double& { return o.slam.tracker.min_buffer_matching_ratio; })},
+      {"odometry_sigma_m",
+       Set<double>([](O& o) -> double& { return o.slam.tracker.odometry_sigma_m; })},
+      {"odometry_sigma_per_m",
+       Set<double>([](O& o) -> double& { return o.slam.tracker.odometry_sigma_per_m; })},
+      {"odometry_sigma_rad",
+       Set<double>([](O& o) -> double& { return o.slam.tracker.odometry_sigma_rad; })},
+      {"odometry_sigma_rad_per_m",
+       Set<double>([](O& o) -> double& { return o.slam.tracker.odometry_sigma_rad_per_m; })},
+      {"odometry_sigma_rad_per_rad",
+       Set<double>([](O& o) -> double& { return o.slam.tracker.odometry_sigma_rad_per_rad; })},
       {"key_frame_translation_m", Set<double>([](O& o) -> double& {
          return o.slam.tracker.key_frames.translation_threshold_m;
        })},

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "core/error.hpp"
@@ -184,19 +185,35 @@ void SlamPipeline::Finish() {
   quality_.odometry_rejected = tracker_.odometry_rejected();
   const auto& frames = map_.key_frames();
   const double max_range_sq = options_.map_max_range_m * options_.map_max_range_m;
-  for (std::size_t i = 0; i < scans_.size(); ++i) {
-    ScanRecord& record = scans_[i];
-    record.T_world_base = Compose(frames[record.key_frame].T_world_base, record.T_keyframe_base);
-    const PlanarPose T_world_laser = Compose(record.T_world_base, T_base_laser_);
+  const auto hits_of = [&](std::size_t i) {
     Points2 hits;
     hits.reserve(map_points_base_[i].size());
     for (const Eigen::Vector2f& point : map_points_base_[i]) {
       const Eigen::Vector2d p = point.cast<double>();
       const Eigen::Vector2d from_laser = p - Eigen::Vector2d(T_base_laser_.x_m, T_base_laser_.y_m);
       if (from_laser.squaredNorm() <= max_range_sq)
-        hits.push_back(Transform(record.T_world_base, p));
+        hits.push_back(Transform(scans_[i].T_world_base, p));
     }
-    grid_.InsertScan({T_world_laser.x_m, T_world_laser.y_m}, hits);
+    return hits;
+  };
+  // Final poses and the extent of the map first, so the grid is allocated once.
+  Eigen::Vector2d low = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector2d high = -low;
+  for (std::size_t i = 0; i < scans_.size(); ++i) {
+    ScanRecord& record = scans_[i];
+    record.T_world_base = Compose(frames[record.key_frame].T_world_base, record.T_keyframe_base);
+    const PlanarPose T_world_laser = Compose(record.T_world_base, T_base_laser_);
+    for (const Eigen::Vector2d& p : hits_of(i)) {
+      low = low.cwiseMin(p);
+      high = high.cwiseMax(p);
+    }
+    low = low.cwiseMin(Eigen::Vector2d(T_world_laser.x_m, T_world_laser.y_m));
+    high = high.cwiseMax(Eigen::Vector2d(T_world_laser.x_m, T_world_laser.y_m));
+  }
+  grid_.Cover(low, high);
+  for (std::size_t i = 0; i < scans_.size(); ++i) {
+    const PlanarPose T_world_laser = Compose(scans_[i].T_world_base, T_base_laser_);
+    grid_.InsertScan({T_world_laser.x_m, T_world_laser.y_m}, hits_of(i));
   }
 }
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <Eigen/Cholesky>
+
 #include "core/error.hpp"
 
 namespace littermap::reconstruct {
@@ -20,6 +22,21 @@ bool Plausible(const TrackerOptions& options, const PlanarPose& from, const Plan
              options.max_correction_m + fraction * std::hypot(motion.x_m, motion.y_m) &&
          std::abs(correction.theta_rad) <=
              options.max_correction_rad + fraction * std::abs(motion.theta_rad);
+}
+
+// The pose that best agrees with a match and the prediction, each weighted by its information
+// (x, y, theta in the world frame, as the matcher's), and the information of that pose.
+void FuseWithPrediction(const PlanarPose& predicted, const Eigen::Matrix3d& prediction_information,
+                        TrackStep* step) {
+  const Eigen::Vector3d matched_from_predicted(
+      step->T_world_base.x_m - predicted.x_m, step->T_world_base.y_m - predicted.y_m,
+      WrapAngle(step->T_world_base.theta_rad - predicted.theta_rad));
+  const Eigen::Matrix3d information = step->information + prediction_information;
+  const Eigen::Vector3d fused =
+      information.ldlt().solve(step->information * matched_from_predicted);
+  step->T_world_base = {predicted.x_m + fused.x(), predicted.y_m + fused.y(),
+                        WrapAngle(predicted.theta_rad + fused.z())};
+  step->information = information;
 }
 
 bool Finite(const PlanarPose& p) {
@@ -54,6 +71,13 @@ void TrackerOptions::Validate() const {
       !(max_scan_gap_s > 0)) {
     throw UsageError("tracker: odometry limits must be > 0");
   }
+  if (!(odometry_sigma_m > 0) || !(odometry_sigma_rad > 0) || !(odometry_sigma_per_m >= 0) ||
+      !(odometry_sigma_rad_per_m >= 0) || !(odometry_sigma_rad_per_rad >= 0) ||
+      !(constant_velocity_sigma_factor >= 1)) {
+    throw UsageError(
+        "tracker: odometry sigmas must be > 0 (their per-motion shares >= 0) and "
+        "constant_velocity_sigma_factor >= 1");
+  }
 }
 
 Tracker::Tracker(const TrackerOptions& options, KeyFrameMap* map, RgbdFallback* rgbd)
@@ -84,6 +108,21 @@ PlanarPose Tracker::Predict(const TrackInput& input, bool* odometry_used) {
         dt <= options_.max_scan_gap_s ? Scale(velocity_per_s_, std::max(dt, 0.0)) : PlanarPose{};
   }
   return Compose(pose_, *increment);
+}
+
+Eigen::Matrix3d Tracker::PredictionInformation(const PlanarPose& predicted,
+                                               bool odometry_used) const {
+  const PlanarPose motion = Between(pose_, predicted);
+  const double distance_m = std::hypot(motion.x_m, motion.y_m);
+  const double factor = odometry_used ? 1 : options_.constant_velocity_sigma_factor;
+  const double sigma_m =
+      factor * (options_.odometry_sigma_m + options_.odometry_sigma_per_m * distance_m);
+  const double sigma_rad =
+      factor * (options_.odometry_sigma_rad + options_.odometry_sigma_rad_per_m * distance_m +
+                options_.odometry_sigma_rad_per_rad * std::abs(motion.theta_rad));
+  return Eigen::Vector3d(1 / (sigma_m * sigma_m), 1 / (sigma_m * sigma_m),
+                         1 / (sigma_rad * sigma_rad))
+      .asDiagonal();
 }
 
 TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
@@ -129,7 +168,11 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
         }
       }
     }
-    if (step.information.isZero()) step.routine = Routine::kOdometryOnly;
+    if (step.information.isZero()) {
+      step.routine = Routine::kOdometryOnly;
+    } else {
+      FuseWithPrediction(predicted, PredictionInformation(predicted, step.odometry_used), &step);
+    }
     const double dt = ToSeconds(input.stamp_ns - last_stamp_ns_);
     const PlanarPose moved = Between(pose_, step.T_world_base);
     velocity_per_s_ = dt > 1e-6 ? Scale(moved, 1.0 / dt) : PlanarPose{};

@@ -52,6 +52,16 @@ struct TrackerOptions {
   double max_correction_m = 0.3;
   double max_correction_rad = 0.12;
   double max_correction_fraction = 0.25;
+  // The prediction is fused with every accepted match, each weighted by its information, so a
+  // scan that constrains the pose only partly (one trunk, one wall) keeps the prediction in the
+  // directions it leaves open instead of sliding there. Standard deviations of the prediction:
+  // a floor plus a share of the predicted motion; the constant-velocity model is far weaker.
+  double odometry_sigma_m = 0.01;
+  double odometry_sigma_per_m = 0.05;
+  double odometry_sigma_rad = 0.005;
+  double odometry_sigma_rad_per_m = 0.02;
+  double odometry_sigma_rad_per_rad = 0.05;
+  double constant_velocity_sigma_factor = 10;
   void Validate() const;
 };
 
@@ -82,6 +92,8 @@ class Tracker {
 
  private:
   PlanarPose Predict(const TrackInput& input, bool* odometry_used);
+  // Information of the predicted pose `predicted` reached from the current pose.
+  Eigen::Matrix3d PredictionInformation(const PlanarPose& predicted, bool odometry_used) const;
 
   TrackerOptions options_;
   KeyFrameMap* map_;
