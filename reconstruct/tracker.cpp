@@ -110,9 +110,9 @@ PlanarPose Tracker::Predict(const TrackInput& input, bool* odometry_used) {
   return Compose(pose_, *increment);
 }
 
-Eigen::Matrix3d Tracker::PredictionInformation(const PlanarPose& predicted,
+Eigen::Matrix3d Tracker::PredictionInformation(const PlanarPose& from, const PlanarPose& to,
                                                bool odometry_used) const {
-  const PlanarPose motion = Between(pose_, predicted);
+  const PlanarPose motion = Between(from, to);
   const double distance_m = std::hypot(motion.x_m, motion.y_m);
   const double factor = odometry_used ? 1 : options_.constant_velocity_sigma_factor;
   const double sigma_m =
@@ -170,9 +170,18 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
     }
     if (step.information.isZero()) {
       step.routine = Routine::kOdometryOnly;
+    } else if (step.odometry_used && anchor_) {
+      // The odometry since the anchor, not since the last scan: a match that slides a little
+      // every scan cannot add the slides up between two key frames.
+      const PlanarPose from_anchor =
+          Compose(anchor_->T_world_base, Between(anchor_->T_odom_base, *input.T_odom_base));
+      FuseWithPrediction(from_anchor,
+                         PredictionInformation(anchor_->T_world_base, from_anchor, true), &step);
     } else {
-      FuseWithPrediction(predicted, PredictionInformation(predicted, step.odometry_used), &step);
+      FuseWithPrediction(predicted, PredictionInformation(pose_, predicted, step.odometry_used),
+                         &step);
     }
+    if (!step.odometry_used) anchor_.reset();
     const double dt = ToSeconds(input.stamp_ns - last_stamp_ns_);
     const PlanarPose moved = Between(pose_, step.T_world_base);
     velocity_per_s_ = dt > 1e-6 ? Scale(moved, 1.0 / dt) : PlanarPose{};
@@ -191,8 +200,12 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
     KeyFrame key_frame{scan_index, input.stamp_ns, pose_, input.points_base, path_length_m_, {}};
     step.key_frame = map_->Add(std::move(key_frame));
     step.new_key_frame = true;
+    anchor_.reset();
   } else {
     step.key_frame = map_->key_frames().size() - 1;
+  }
+  if (!anchor_ && input.T_odom_base && Finite(*input.T_odom_base)) {
+    anchor_ = Anchor{pose_, *input.T_odom_base};
   }
   if (buffer_.NeedsFrame(pose_) && step.routine != Routine::kOdometryOnly) {
     buffer_.Add({pose_, input.points_base});
@@ -202,6 +215,7 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
 
 void Tracker::OnKeyFramesMoved(const PlanarPose& T_new_old) {
   pose_ = Compose(T_new_old, pose_);
+  if (anchor_) anchor_->T_world_base = Compose(T_new_old, anchor_->T_world_base);
   buffer_.Correct(T_new_old);
 }
 

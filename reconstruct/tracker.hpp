@@ -92,8 +92,9 @@ class Tracker {
 
  private:
   PlanarPose Predict(const TrackInput& input, bool* odometry_used);
-  // Information of the predicted pose `predicted` reached from the current pose.
-  Eigen::Matrix3d PredictionInformation(const PlanarPose& predicted, bool odometry_used) const;
+  // Information of a pose predicted by odometry (or constant velocity) from pose `from`.
+  Eigen::Matrix3d PredictionInformation(const PlanarPose& from, const PlanarPose& to,
+                                        bool odometry_used) const;
 
   TrackerOptions options_;
   KeyFrameMap* map_;
@@ -104,6 +105,13 @@ class Tracker {
   PlanarPose velocity_per_s_;  // body-frame motion per second, for the constant-velocity model
   TimestampNs last_stamp_ns_ = 0;
   std::optional<PlanarPose> last_odom_;
+  // The pose and odometry at the last key frame (or since odometry last broke off): matches are
+  // fused with the odometry from there.
+  struct Anchor {
+    PlanarPose T_world_base;
+    PlanarPose T_odom_base;
+  };
+  std::optional<Anchor> anchor_;
   double path_length_m_ = 0;
   std::size_t odometry_rejected_ = 0;
 };

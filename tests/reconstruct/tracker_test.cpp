@@ -61,15 +61,15 @@ double LargestErrorPassingColumn(const TrackerOptions& options) {
 
 TEST(Tracker, PredictionHoldsThePoseWhereTheScanLeavesItOpen) {
   // Exact odometry: all error comes from the matches. With a prediction too weak to matter the
-  // noisy column scans let the pose wander around the column (measured 2.5 m over 8 m); fused
-  // with the prediction each step can slide only a little (measured 0.64 m: the slide of every
-  // step still adds up, as the prediction is relative to the previous pose).
+  // noisy column scans let the pose wander around the column (measured 2.7 m over 8 m); fused
+  // with the odometry since the last key frame it stays close (measured 0.24 m: each key frame
+  // still starts from a pose that slid a little).
   TrackerOptions without;
   without.odometry_sigma_m = 100;
   without.odometry_sigma_rad = 100;
   const double wandered_m = LargestErrorPassingColumn(without);
   EXPECT_GT(wandered_m, 1.0);
-  EXPECT_LT(LargestErrorPassingColumn(TrackerOptions{}), wandered_m / 3);
+  EXPECT_LT(LargestErrorPassingColumn(TrackerOptions{}), wandered_m / 5);
 }
 
 }  // namespace
