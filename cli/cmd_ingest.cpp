@@ -1,11 +1,16 @@
 // littermap ingest SITE.gpkg RUN_DIR: adds a reconstructed run (RUN_DIR/trajectory.tum and
 // RUN_DIR/items.csv) to a site database. Idempotent. Until the detect stage exists, the
 // simulator's truth (RUN_DIR/litter.csv) stands in for items.csv.
+// Registration: the first run with a map (RUN_DIR/map.yaml) defines the site map; later runs
+// start from the dock (the site origin, or --initial) and are placed by matching their map to
+// the site map, refused when the match is poor; --transform places a run by hand.
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +19,8 @@
 #include "core/error.hpp"
 #include "db/site_database.hpp"
 #include "heatmap/run_ingest.hpp"
+#include "reconstruct/map_registration.hpp"
+#include "reconstruct/occupancy_map_file.hpp"
 
 namespace littermap::cli {
 namespace {
@@ -22,8 +29,83 @@ struct IngestArguments {
   std::string site;
   std::string run_dir;
   std::string name;
+  std::vector<double> initial;    // x y yaw_deg: where the run starts in the site (the dock)
+  std::vector<double> transform;  // x y yaw_deg: place the run by hand, no matching
+  reconstruct::MapRegistrationOptions registration;
   heatmap::IngestOptions options;
 };
+
+PlanarPose PoseArgument(const std::vector<double>& values) {
+  if (values.empty()) return {};
+  return {values[0], values[1], values[2] * std::numbers::pi / 180};
+}
+
+db::SiteMapRecord SiteMapFrom(const reconstruct::OccupancyMapImage& map,
+                              const PlanarPose& T_site_map) {
+  db::SiteMapRecord record;
+  record.resolution_m = map.resolution_m;
+  record.origin_x_m = map.origin_x_m;
+  record.origin_y_m = map.origin_y_m;
+  record.width = map.width;
+  record.height = map.height;
+  record.occupied_threshold = map.occupied_threshold;
+  record.T_site_map = T_site_map;
+  record.pixels = map.pixels;
+  return record;
+}
+
+// Where the run's frame sits in the site: by hand, by matching its map onto the site map, or
+// (first run, no map) the site frame itself.
+void PlaceRun(const IngestArguments& arguments, db::SiteDatabase& site, heatmap::RunInput* run) {
+  const std::filesystem::path map_yaml = std::filesystem::path(arguments.run_dir) / "map.yaml";
+  const bool by_hand = !arguments.transform.empty();
+  run->T_site_run = by_hand ? PoseArgument(arguments.transform) : PoseArgument(arguments.initial);
+  if (!std::filesystem::exists(map_yaml)) {
+    if (!by_hand) {
+      std::printf("%s: no map.yaml; the run is taken to be in the site frame\n",
+                  arguments.run_dir.c_str());
+    }
+    return;
+  }
+  const reconstruct::OccupancyMapImage run_map = reconstruct::ReadOccupancyMap(map_yaml);
+  const std::optional<db::SiteMapRecord> site_map = site.SiteMap();
+  if (!site_map) {
+    run->site_map = SiteMapFrom(run_map, run->T_site_run);
+    std::printf("The run's map becomes the site map\n");
+    return;
+  }
+  if (by_hand) return;
+  reconstruct::OccupancyMapImage site_image;
+  site_image.resolution_m = site_map->resolution_m;
+  site_image.origin_x_m = site_map->origin_x_m;
+  site_image.origin_y_m = site_map->origin_y_m;
+  site_image.width = site_map->width;
+  site_image.height = site_map->height;
+  site_image.occupied_threshold = site_map->occupied_threshold;
+  site_image.pixels = site_map->pixels;
+  reconstruct::Points2 site_points = reconstruct::OccupiedCellCentres(site_image);
+  for (Eigen::Vector2d& p : site_points) p = reconstruct::Transform(site_map->T_site_map, p);
+  const reconstruct::MapRegistrationResult registration = reconstruct::RegisterMap(
+      site_points, reconstruct::OccupiedCellCentres(run_map), run->T_site_run,
+      arguments.registration);
+  if (!registration.registered) {
+    char detail[160];
+    std::snprintf(detail, sizeof detail, "matching ratio %.2f, needs %.2f",
+                  registration.matching_ratio, arguments.registration.min_matching_ratio);
+    throw BadInputError(
+        map_yaml.string() + ": the run's map does not match the site map of " + arguments.site +
+        " within " + std::to_string(arguments.registration.window_m).substr(0, 4) +
+        " m of where it starts (" + detail +
+        "). If the run did not start at the dock give --initial X Y DEG near its start, or place "
+        "it by hand with --transform X Y DEG");
+  }
+  run->T_site_run = registration.T_site_run;
+  run->registration_quality = registration.matching_ratio;
+  std::printf("Registered onto the site map: x %.2f m, y %.2f m, yaw %.2f deg (matching ratio "
+              "%.2f)\n",
+              run->T_site_run.x_m, run->T_site_run.y_m,
+              run->T_site_run.theta_rad * 180 / std::numbers::pi, registration.matching_ratio);
+}
 
 std::vector<PlanarPose> PlanarTrajectory(const std::vector<TumPose>& poses) {
   std::vector<PlanarPose> planar;
@@ -64,6 +146,12 @@ void RunIngest(IngestArguments arguments, CliContext& context) {
     run.end_time_s = ToSeconds(poses.back().stamp_ns);
   }
   run.items = heatmap::ReadRunItems(items_file);
+  if (!site.FindRun(run.source_digest)) PlaceRun(arguments, site, &run);
+  for (PlanarPose& pose : run.T_site_base) pose = Compose(run.T_site_run, pose);
+  for (heatmap::RunItem& item : run.items) {
+    const Eigen::Vector2d p = reconstruct::Transform(run.T_site_run, Eigen::Vector2d(item.xy.x, item.xy.y));
+    item.xy = {p.x(), p.y()};
+  }
   const heatmap::IngestResult result = heatmap::IngestRun(site, run, arguments.options);
   if (result.already_ingested) {
     std::printf("Run %s is already in %s as run %lld; nothing changed\n", run.name.c_str(),
@@ -92,6 +180,23 @@ void RegisterIngestCommand(CLI::App& app, CliContext& context) {
       ->add_option("RUN_DIR", arguments->run_dir, "Run directory with trajectory.tum and items.csv")
       ->required();
   ingest->add_option("--name", arguments->name, "Run name (default: the directory name)");
+  ingest
+      ->add_option("--initial", arguments->initial,
+                   "Where the run starts in the site frame, X Y DEG (default: the dock, 0 0 0); "
+                   "its map is matched from there")
+      ->expected(3);
+  ingest
+      ->add_option("--transform", arguments->transform,
+                   "Place the run's frame at X Y DEG in the site frame by hand, without matching")
+      ->expected(3);
+  ingest
+      ->add_option("--search-window", arguments->registration.window_m,
+                   "How far (m) from --initial the run's map is searched for on the site map")
+      ->capture_default_str();
+  ingest
+      ->add_option("--min-matching-ratio", arguments->registration.min_matching_ratio,
+                   "Share of the run's map that must land on the site map")
+      ->capture_default_str();
   auto& options = arguments->options;
   ingest
       ->add_option("--same-item-radius", options.same_item_radius_m,

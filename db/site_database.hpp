@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/planar_pose.hpp"
 #include "core/sqlite_database.hpp"
 #include "db/geometry_blob.hpp"
 #include "db/site_frame.hpp"
@@ -40,6 +41,22 @@ struct RunRecord {
   double start_time_s = 0.0;
   double end_time_s = 0.0;
   double length_m = 0.0;
+  PlanarPose T_site_run;                      // the run's map frame in the site frame
+  std::optional<double> registration_quality;  // matching ratio; none: not matched (first run,
+                                               // manual transform, or no map)
+};
+
+// The occupancy map later runs are registered onto (reconstruct's map.pgm of the first run).
+struct SiteMapRecord {
+  std::int64_t run_id = 0;
+  double resolution_m = 0.0;
+  double origin_x_m = 0.0;  // lower-left corner, map frame
+  double origin_y_m = 0.0;
+  int width = 0;
+  int height = 0;
+  double occupied_threshold = 0.65;
+  PlanarPose T_site_map;
+  std::vector<std::uint8_t> pixels;  // map_server grey levels, row-major, top row first
 };
 
 struct ItemRecord {
@@ -116,6 +133,9 @@ class SiteDatabase {
   std::optional<std::int64_t> FindRun(const std::string& source_digest);
   std::int64_t AddRun(const RunRecord& run);
   std::vector<RunRecord> Runs();
+  std::optional<SiteMapRecord> SiteMap();
+  // Throws InternalError if the site already has a map.
+  void SetSiteMap(const SiteMapRecord& map);
   void AddRunTrack(std::int64_t run_id, std::span<const PointXY> site_points);
   std::vector<RunTrack> RunTracks();
   std::int64_t AddItem(const ItemRecord& item);

@@ -101,9 +101,29 @@ CREATE TABLE hotspots (
 );
 )sql";
 
+// Version 2: the site map, which later runs are registered onto: the occupancy map of the run
+// that defined it (map_server grey levels, top row first) and where its frame sits in the site.
+constexpr const char* kVersion2 = R"sql(
+CREATE TABLE site_map (
+  site_map_id INTEGER PRIMARY KEY CHECK (site_map_id = 1),
+  run_id INTEGER NOT NULL REFERENCES runs(run_id),
+  resolution_m REAL NOT NULL CHECK (resolution_m > 0),
+  origin_x_m REAL NOT NULL,
+  origin_y_m REAL NOT NULL,
+  width INTEGER NOT NULL CHECK (width > 0),
+  height INTEGER NOT NULL CHECK (height > 0),
+  occupied_threshold REAL NOT NULL,
+  site_from_map_x_m REAL NOT NULL,
+  site_from_map_y_m REAL NOT NULL,
+  site_from_map_yaw_rad REAL NOT NULL,
+  pixels BLOB NOT NULL CHECK (length(pixels) = width * height)
+);
+)sql";
+
 const std::vector<Migration>& Migrations() {
   static const std::vector<Migration> migrations = {
       {1, "sites, runs, run_tracks, litter_items, detections, coverage, hotspots", kVersion1},
+      {2, "site_map: the occupancy map later runs are registered onto", kVersion2},
   };
   return migrations;
 }

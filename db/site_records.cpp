@@ -28,27 +28,83 @@ std::optional<std::int64_t> SiteDatabase::FindRun(const std::string& source_dige
 
 std::int64_t SiteDatabase::AddRun(const RunRecord& run) {
   SqliteStatement insert = database_.Prepare(
-      "INSERT INTO runs (site_id, name, source_digest, start_time_s, end_time_s, length_m) "
-      "VALUES (1, ?, ?, ?, ?, ?)");
+      "INSERT INTO runs (site_id, name, source_digest, start_time_s, end_time_s, length_m, "
+      "site_from_run_x_m, site_from_run_y_m, site_from_run_yaw_rad, registration_quality) "
+      "VALUES (1, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
   insert.Bind(1, run.name);
   insert.Bind(2, run.source_digest);
   insert.BindReal(3, run.start_time_s);
   insert.BindReal(4, run.end_time_s);
   insert.BindReal(5, run.length_m);
+  insert.BindReal(6, run.T_site_run.x_m);
+  insert.BindReal(7, run.T_site_run.y_m);
+  insert.BindReal(8, run.T_site_run.theta_rad);
+  if (run.registration_quality) {
+    insert.BindReal(9, *run.registration_quality);
+  } else {
+    insert.BindNull(9);
+  }
   insert.Run();
   return database_.LastInsertId();
 }
 
 std::vector<RunRecord> SiteDatabase::Runs() {
   SqliteStatement query = database_.Prepare(
-      "SELECT run_id, name, source_digest, start_time_s, end_time_s, length_m FROM runs "
-      "ORDER BY run_id");
+      "SELECT run_id, name, source_digest, start_time_s, end_time_s, length_m, "
+      "site_from_run_x_m, site_from_run_y_m, site_from_run_yaw_rad, registration_quality "
+      "FROM runs ORDER BY run_id");
   std::vector<RunRecord> runs;
   while (query.Step()) {
-    runs.push_back({query.ColumnInt64(0), query.ColumnText(1), query.ColumnText(2),
-                    query.ColumnDouble(3), query.ColumnDouble(4), query.ColumnDouble(5)});
+    RunRecord& run = runs.emplace_back();
+    run.run_id = query.ColumnInt64(0);
+    run.name = query.ColumnText(1);
+    run.source_digest = query.ColumnText(2);
+    run.start_time_s = query.ColumnDouble(3);
+    run.end_time_s = query.ColumnDouble(4);
+    run.length_m = query.ColumnDouble(5);
+    run.T_site_run = {query.ColumnDouble(6), query.ColumnDouble(7), query.ColumnDouble(8)};
+    if (!query.ColumnIsNull(9)) run.registration_quality = query.ColumnDouble(9);
   }
   return runs;
+}
+
+std::optional<SiteMapRecord> SiteDatabase::SiteMap() {
+  SqliteStatement query = database_.Prepare(
+      "SELECT run_id, resolution_m, origin_x_m, origin_y_m, width, height, occupied_threshold, "
+      "site_from_map_x_m, site_from_map_y_m, site_from_map_yaw_rad, pixels FROM site_map");
+  if (!query.Step()) return std::nullopt;
+  SiteMapRecord map;
+  map.run_id = query.ColumnInt64(0);
+  map.resolution_m = query.ColumnDouble(1);
+  map.origin_x_m = query.ColumnDouble(2);
+  map.origin_y_m = query.ColumnDouble(3);
+  map.width = static_cast<int>(query.ColumnInt64(4));
+  map.height = static_cast<int>(query.ColumnInt64(5));
+  map.occupied_threshold = query.ColumnDouble(6);
+  map.T_site_map = {query.ColumnDouble(7), query.ColumnDouble(8), query.ColumnDouble(9)};
+  const std::span<const std::uint8_t> pixels = query.ColumnBlob(10);
+  map.pixels.assign(pixels.begin(), pixels.end());
+  return map;
+}
+
+void SiteDatabase::SetSiteMap(const SiteMapRecord& map) {
+  if (SiteMap()) throw InternalError(database_.file().string() + ": the site already has a map");
+  SqliteStatement insert = database_.Prepare(
+      "INSERT INTO site_map (site_map_id, run_id, resolution_m, origin_x_m, origin_y_m, width, "
+      "height, occupied_threshold, site_from_map_x_m, site_from_map_y_m, site_from_map_yaw_rad, "
+      "pixels) VALUES (1, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  insert.Bind(1, map.run_id);
+  insert.BindReal(2, map.resolution_m);
+  insert.BindReal(3, map.origin_x_m);
+  insert.BindReal(4, map.origin_y_m);
+  insert.Bind(5, std::int64_t{map.width});
+  insert.Bind(6, std::int64_t{map.height});
+  insert.BindReal(7, map.occupied_threshold);
+  insert.BindReal(8, map.T_site_map.x_m);
+  insert.BindReal(9, map.T_site_map.y_m);
+  insert.BindReal(10, map.T_site_map.theta_rad);
+  insert.BindBlob(11, map.pixels);
+  insert.Run();
 }
 
 void SiteDatabase::AddRunTrack(std::int64_t run_id, std::span<const PointXY> site_points) {

@@ -158,8 +158,14 @@ IngestResult IngestRun(db::SiteDatabase& site, const RunInput& run, const Ingest
       result.run_id = *existing;
       return;
     }
-    result.run_id = site.AddRun(
-        {0, run.name, run.source_digest, run.start_time_s, run.end_time_s, result.length_m});
+    result.run_id = site.AddRun({0, run.name, run.source_digest, run.start_time_s,
+                                 run.end_time_s, result.length_m, run.T_site_run,
+                                 run.registration_quality});
+    if (run.site_map && !site.SiteMap()) {  // two first runs at once: the first one wins
+      db::SiteMapRecord map = *run.site_map;
+      map.run_id = result.run_id;
+      site.SetSiteMap(map);
+    }
     site.AddRunTrack(result.run_id, track);
     coverage.run_id = result.run_id;
     site.AddCoverage(coverage);

@@ -5,13 +5,13 @@
 // until picked up), so reports can tell new litter from old. Idempotent: a run whose inputs'
 // digest is already stored changes nothing. Everything is written in one transaction.
 //
-// Registration: the run's map frame is taken as the site frame (true for simulator runs of one
-// world and for runs that start from the dock); matching a run's occupancy map to the site map
-// is not done yet.
+// Registration (placing the run's map frame in the site frame) happens before: RunInput is in
+// the site frame already and records the transform used.
 
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -39,6 +39,9 @@ struct RunInput {
   double end_time_s = 0.0;
   std::vector<PlanarPose> T_site_base;  // in time order
   std::vector<RunItem> items;           // site frame
+  PlanarPose T_site_run;                // how the run's map frame was placed in the site
+  std::optional<double> registration_quality;
+  std::optional<db::SiteMapRecord> site_map;  // the first run with a map defines the site map
 };
 
 struct IngestResult {

@@ -97,12 +97,12 @@ TEST(SiteDatabase, ReopensWithRecordsAndGeometryInTheSiteCrs) {
   {
     SiteDatabase site = SiteDatabase::Create(file, Options("p", 32633, 500000, 5000000, 30));
     site.InTransaction([&] {
-      const std::int64_t run = site.AddRun({0, "run1", "digest-1", 0, 900, 120});
+      const std::int64_t run = site.AddRun({0, "run1", "digest-1", 0, 900, 120, {}, std::nullopt});
       const std::vector<PointXY> track = {{0, 0}, {3, 4}, {3, 10}};
       site.AddRunTrack(run, track);
       site.AddItem({0, "bottle", {3, 4}, 0.05, 0.2, 0.9, run, run, 1});
     });
-    EXPECT_THROW(site.AddRun({0, "again", "digest-1", 0, 1, 1}), SqliteError);  // unique digest
+    EXPECT_THROW(site.AddRun({0, "again", "digest-1", 0, 1, 1, {}, std::nullopt}), SqliteError);  // unique digest
   }
   SiteDatabase site = SiteDatabase::Open(file);
   EXPECT_EQ(site.site().frame.epsg_code, 32633);
@@ -191,6 +191,60 @@ TEST(SiteDatabase, RefusesASchemaFromTheFuture) {
   } catch (const BadInputError& e) {
     EXPECT_NE(std::string(e.what()).find("schema version 999"), std::string::npos) << e.what();
   }
+}
+
+TEST(SiteDatabase, KeepsTheSiteMapAndWhereEachRunWasPlaced) {
+  TempDir dir;
+  const auto file = dir / "park.gpkg";
+  {
+    SiteDatabase site = SiteDatabase::Create(file, Options("p"));
+    RunRecord first{0, "first", "digest-1", 0, 10, 5, {}, std::nullopt};
+    RunRecord second{0, "second", "digest-2", 20, 30, 5, {1.5, -2.0, 0.25}, 0.87};
+    const std::int64_t first_id = site.AddRun(first);
+    site.AddRun(second);
+    EXPECT_FALSE(site.SiteMap());
+    SiteMapRecord map;
+    map.run_id = first_id;
+    map.resolution_m = 0.05;
+    map.origin_x_m = -3;
+    map.origin_y_m = -4;
+    map.width = 3;
+    map.height = 2;
+    map.T_site_map = {0.5, 0.25, 0.1};
+    map.pixels = {0, 254, 205, 205, 0, 254};
+    site.SetSiteMap(map);
+    EXPECT_THROW(site.SetSiteMap(map), InternalError);  // one map per site
+  }
+  SiteDatabase site = SiteDatabase::Open(file);
+  const std::vector<RunRecord> runs = site.Runs();
+  ASSERT_EQ(runs.size(), 2u);
+  EXPECT_FALSE(runs[0].registration_quality);
+  EXPECT_DOUBLE_EQ(runs[1].T_site_run.x_m, 1.5);
+  EXPECT_DOUBLE_EQ(runs[1].T_site_run.y_m, -2.0);
+  EXPECT_DOUBLE_EQ(runs[1].T_site_run.theta_rad, 0.25);
+  EXPECT_DOUBLE_EQ(*runs[1].registration_quality, 0.87);
+  const std::optional<SiteMapRecord> map = site.SiteMap();
+  ASSERT_TRUE(map);
+  EXPECT_EQ(map->run_id, runs[0].run_id);
+  EXPECT_EQ(map->width, 3);
+  EXPECT_EQ(map->height, 2);
+  EXPECT_DOUBLE_EQ(map->origin_y_m, -4);
+  EXPECT_DOUBLE_EQ(map->T_site_map.theta_rad, 0.1);
+  EXPECT_EQ(map->pixels, (std::vector<std::uint8_t>{0, 254, 205, 205, 0, 254}));
+}
+
+TEST(SiteDatabase, AVersionOneSiteGainsTheSiteMapTableOnOpen) {
+  TempDir dir;
+  const auto file = dir / "park.gpkg";
+  {
+    SiteDatabase site = SiteDatabase::Create(file, Options("p"));
+    site.sql().Execute("DROP TABLE site_map");
+    site.sql().Execute("DELETE FROM littermap_schema_version WHERE version = 2");
+  }
+  SiteDatabase site = SiteDatabase::Open(file);
+  EXPECT_EQ(site.site().schema_version, 2);
+  EXPECT_TRUE(site.sql().HasTable("site_map"));
+  EXPECT_FALSE(site.SiteMap());
 }
 
 }  // namespace

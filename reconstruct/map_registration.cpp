@@ -1,0 +1,43 @@
+#include "reconstruct/map_registration.hpp"
+
+#include <utility>
+
+#include "core/error.hpp"
+
+namespace littermap::reconstruct {
+
+void MapRegistrationOptions::Validate() const {
+  if (!(window_m >= 0) || !(window_rad >= 0) || !(point_voxel_m > 0)) {
+    throw UsageError("map registration: windows must be >= 0 and point_voxel_m > 0");
+  }
+  if (!(min_matching_ratio > 0 && min_matching_ratio <= 1)) {
+    throw UsageError("map registration: min_matching_ratio must be in (0, 1]");
+  }
+  correlative.Validate();
+  icp.Validate();
+}
+
+MapRegistrationResult RegisterMap(const Points2& site_points, const Points2& run_points,
+                                  const PlanarPose& initial_T_site_run,
+                                  const MapRegistrationOptions& options) {
+  options.Validate();
+  MapRegistrationResult result;
+  result.T_site_run = initial_T_site_run;
+  Points2 site = VoxelDownsample(site_points, options.point_voxel_m);
+  const Points2 run = VoxelDownsample(run_points, options.point_voxel_m);
+  result.site_points = site.size();
+  result.run_points = run.size();
+  if (site.empty() || run.size() < options.icp.min_correspondences) return result;
+  const CorrelativeResult coarse = MatchCorrelative(run, site, initial_T_site_run, options.window_m,
+                                                    options.window_rad, options.correlative);
+  if (!coarse.found) return result;
+  result.correlative_score = coarse.score;
+  const IcpTarget target(std::move(site), options.icp);
+  const IcpResult fine = MatchIcp(run, target, coarse.T_target_source, options.icp);
+  result.matching_ratio = fine.inlier_ratio;
+  if (fine.converged) result.T_site_run = fine.T_target_source;
+  result.registered = fine.converged && fine.inlier_ratio >= options.min_matching_ratio;
+  return result;
+}
+
+}  // namespace littermap::reconstruct

@@ -1,0 +1,42 @@
+#pragma once
+// Registers a run's occupancy map onto the site map: the occupied cells of both as points, a
+// correlative search in a window around the initial guess (a run that starts at the dock starts
+// near the site frame's origin) and ICP to refine it. The match counts only if enough of the
+// run's walls and trunks land on the site's: a run elsewhere, or a park changed beyond
+// recognition, is refused rather than stored in the wrong place.
+
+#include <cstddef>
+
+#include "core/planar_pose.hpp"
+#include "reconstruct/correlative_matcher.hpp"
+#include "reconstruct/icp_matcher.hpp"
+#include "reconstruct/scan_points.hpp"
+
+namespace littermap::reconstruct {
+
+struct MapRegistrationOptions {
+  double window_m = 3;        // search half-width around the initial guess
+  double window_rad = 0.26;   // 15 degrees
+  double point_voxel_m = 0.1;  // both maps' points thinned to this spacing
+  // Accepted when at least this share of the run's points lies within inlier_distance_m of the
+  // site's after ICP.
+  double min_matching_ratio = 0.5;
+  CorrelativeOptions correlative{0.1, 0.15, 8, 0.4, 1e6, 400};
+  IcpOptions icp;
+  void Validate() const;
+};
+
+struct MapRegistrationResult {
+  bool registered = false;
+  PlanarPose T_site_run;
+  double matching_ratio = 0;     // share of the run's points on the site's, in [0, 1]
+  double correlative_score = 0;  // of the coarse match, in [0, 1]
+  std::size_t run_points = 0;
+  std::size_t site_points = 0;
+};
+
+MapRegistrationResult RegisterMap(const Points2& site_points, const Points2& run_points,
+                                  const PlanarPose& initial_T_site_run,
+                                  const MapRegistrationOptions& options);
+
+}  // namespace littermap::reconstruct

@@ -1,0 +1,104 @@
+// Map registration and map files: a room's map found again under a known offset, a different
+// room refused, and the map_server files read back as they were written.
+
+#include "reconstruct/map_registration.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "core/error.hpp"
+#include "reconstruct/occupancy_grid.hpp"
+#include "reconstruct/occupancy_map_file.hpp"
+#include "support/temp_dir.hpp"
+#include "synthetic_world.hpp"
+
+namespace littermap::reconstruct {
+namespace {
+
+// Points every 5 cm along the walls, with Gaussian noise.
+Points2 WallPoints(const std::vector<testing::Segment>& walls, double noise_m, std::uint64_t seed) {
+  std::mt19937_64 engine(seed);
+  std::normal_distribution<double> noise(0, noise_m);
+  Points2 points;
+  for (const testing::Segment& wall : walls) {
+    const double length = (wall.b - wall.a).norm();
+    for (double s = 0; s <= length; s += 0.05) {
+      points.push_back(wall.a + (wall.b - wall.a) * (s / length) +
+                       Eigen::Vector2d(noise(engine), noise(engine)));
+    }
+  }
+  return points;
+}
+
+TEST(MapRegistration, FindsARunMapUnderAKnownOffset) {
+  const Points2 site = WallPoints(testing::Room(), 0.01, 1);
+  const PlanarPose T_site_run{1.3, -0.8, 0.14};  // 8 degrees
+  Points2 run;
+  for (const Eigen::Vector2d& p : WallPoints(testing::Room(), 0.01, 2)) {
+    run.push_back(Transform(Inverse(T_site_run), p));
+  }
+  const MapRegistrationResult result = RegisterMap(site, run, {}, {});
+  ASSERT_TRUE(result.registered) << result.matching_ratio;
+  EXPECT_NEAR(result.T_site_run.x_m, T_site_run.x_m, 0.02);
+  EXPECT_NEAR(result.T_site_run.y_m, T_site_run.y_m, 0.02);
+  EXPECT_NEAR(result.T_site_run.theta_rad, T_site_run.theta_rad, 0.005);
+  EXPECT_GT(result.matching_ratio, 0.95);
+}
+
+TEST(MapRegistration, RefusesADifferentPlace) {
+  // A long corridor does not fit in the room anywhere.
+  const std::vector<testing::Segment> corridor = {{{0, 0}, {30, 0}}, {{0, 2}, {30, 2}},
+                                                  {{0, 0}, {0, 2}}};
+  const MapRegistrationResult result =
+      RegisterMap(WallPoints(testing::Room(), 0.01, 1), WallPoints(corridor, 0.01, 2), {}, {});
+  EXPECT_FALSE(result.registered);
+  EXPECT_LT(result.matching_ratio, 0.5);
+}
+
+TEST(OccupancyMapFile, ReadsBackWhatTheGridWrote) {
+  testing::TempDir dir;
+  OccupancyGrid grid({});
+  const Points2 hits = {{2.0, 1.0}, {2.0, 1.05}, {-1.0, 3.0}};
+  grid.InsertScan({0, 0}, hits);
+  grid.InsertScan({0, 0}, hits);
+  grid.WritePgmYaml(dir / "map.pgm", dir / "map.yaml");
+  const OccupancyMapImage map = ReadOccupancyMap(dir / "map.yaml");
+  EXPECT_EQ(map.width, grid.width());
+  EXPECT_EQ(map.height, grid.height());
+  EXPECT_DOUBLE_EQ(map.resolution_m, 0.05);
+  const Points2 occupied = OccupiedCellCentres(map);
+  ASSERT_EQ(occupied.size(), hits.size());
+  for (const Eigen::Vector2d& hit : hits) {
+    bool found = false;
+    for (const Eigen::Vector2d& p : occupied) found = found || (p - hit).norm() < 0.05;
+    EXPECT_TRUE(found) << hit.transpose();
+  }
+}
+
+TEST(OccupancyMapFile, BadFilesNameTheFileAndField) {
+  testing::TempDir dir;
+  std::ofstream(dir / "no_resolution.yaml") << "image: map.pgm\norigin: [0, 0, 0]\n";
+  try {
+    ReadOccupancyMap(dir / "no_resolution.yaml");
+    FAIL() << "accepted a map without resolution";
+  } catch (const BadInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no_resolution.yaml: no 'resolution'"), std::string::npos)
+        << e.what();
+  }
+  std::ofstream(dir / "short.yaml") << "image: short.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n";
+  std::ofstream(dir / "short.pgm", std::ios::binary) << "P5\n4 4\n255\nabc";
+  try {
+    ReadOccupancyMap(dir / "short.yaml");
+    FAIL() << "accepted a truncated image";
+  } catch (const BadInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("short.pgm: truncated (3 of 16 pixels)"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace littermap::reconstruct
