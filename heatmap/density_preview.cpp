@@ -1,6 +1,7 @@
 #include "heatmap/density_preview.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -41,7 +42,43 @@ cv::Mat ColourMap(const Raster& density, float nodata, float peak) {
   return colour;
 }
 
-void DrawLegend(cv::Mat& canvas, int x0, int map_height, float peak, const std::string& unit) {
+const cv::Scalar kMapInk(45, 45, 45);
+const cv::Scalar kMappedUnsurveyed(238, 238, 238);
+
+// Occupied map cells as dark ink over the colours; free but unsurveyed ground lighter than
+// ground the robot never mapped. Each pixel takes the darkest map cell it covers.
+void DrawOccupancy(cv::Mat& map, const GridGeometry& grid, double scale,
+                   const DensityPreviewOptions& options) {
+  const double pixel_m = grid.cell_size_m / scale;
+  const int samples =
+      std::clamp(static_cast<int>(std::ceil(pixel_m / options.occupancy_cell_size_m)), 1, 8);
+  const cv::Vec3b unsurveyed(static_cast<std::uint8_t>(kUnsurveyed[0]),
+                             static_cast<std::uint8_t>(kUnsurveyed[1]),
+                             static_cast<std::uint8_t>(kUnsurveyed[2]));
+  for (int r = 0; r < map.rows; ++r) {
+    for (int c = 0; c < map.cols; ++c) {
+      int darkest = 256;
+      for (int i = 0; i < samples; ++i) {
+        for (int j = 0; j < samples; ++j) {
+          const double x = grid.min_x_m + (c + (i + 0.5) / samples) * pixel_m;
+          const double y = grid.max_y_m - (r + (j + 0.5) / samples) * pixel_m;
+          if (const auto grey = options.occupancy(x, y)) darkest = std::min<int>(darkest, *grey);
+        }
+      }
+      cv::Vec3b& pixel = map.at<cv::Vec3b>(r, c);
+      if (darkest < 100) {
+        // Dark ink, or white ink where the density's colour is dark itself.
+        const int luminance = (pixel[0] + 6 * pixel[1] + 3 * pixel[2]) / 10;
+        pixel = luminance < 110 ? cv::Vec3b(255, 255, 255) : cv::Vec3b(45, 45, 45);
+      } else if (darkest > 250 && darkest <= 255 && pixel == unsurveyed) {
+        pixel = cv::Vec3b(238, 238, 238);
+      }
+    }
+  }
+}
+
+void DrawLegend(cv::Mat& canvas, int x0, int map_height, float peak, const std::string& unit,
+                bool with_map) {
   const int bar_top = kTitleHeightPx + 10;
   const int bar_height = std::max(60, std::min(300, map_height - 60));
   for (int y = 0; y < bar_height; ++y) {
@@ -64,6 +101,14 @@ void DrawLegend(cv::Mat& canvas, int x0, int map_height, float peak, const std::
   cv::rectangle(canvas, {x0 + 10, key_y}, {x0 + 30, key_y + 14}, kUnsurveyed, cv::FILLED);
   cv::putText(canvas, "not surveyed", {x0 + 36, key_y + 12}, cv::FONT_HERSHEY_SIMPLEX, 0.45, kInk,
               1, cv::LINE_AA);
+  if (!with_map) return;
+  cv::rectangle(canvas, {x0 + 10, key_y + 22}, {x0 + 30, key_y + 36}, kMappedUnsurveyed,
+                cv::FILLED);
+  cv::putText(canvas, "mapped, not surveyed", {x0 + 36, key_y + 34}, cv::FONT_HERSHEY_SIMPLEX,
+              0.4, kInk, 1, cv::LINE_AA);
+  cv::rectangle(canvas, {x0 + 10, key_y + 44}, {x0 + 30, key_y + 58}, kMapInk, cv::FILLED);
+  cv::putText(canvas, "trees, walls (map)", {x0 + 36, key_y + 56}, cv::FONT_HERSHEY_SIMPLEX, 0.4,
+              kInk, 1, cv::LINE_AA);
 }
 
 }  // namespace
@@ -78,11 +123,12 @@ void WriteDensityPreview(const std::filesystem::path& file, const Raster& densit
                                                 std::max(density.grid.width, density.grid.height)));
   cv::Mat map;
   cv::resize(ColourMap(density, nodata, peak), map, {}, scale, scale, cv::INTER_NEAREST);
+  if (options.occupancy) DrawOccupancy(map, density.grid, scale, options);
   const int height = std::max(map.rows, 420) + kTitleHeightPx;
   cv::Mat canvas(height, map.cols + kLegendWidthPx, CV_8UC3, cv::Scalar(255, 255, 255));
   map.copyTo(canvas(cv::Rect(0, kTitleHeightPx, map.cols, map.rows)));
   cv::putText(canvas, options.title, {8, 25}, cv::FONT_HERSHEY_SIMPLEX, 0.6, kInk, 1, cv::LINE_AA);
-  DrawLegend(canvas, map.cols, map.rows, peak, options.unit);
+  DrawLegend(canvas, map.cols, map.rows, peak, options.unit, static_cast<bool>(options.occupancy));
   if (!cv::imwrite(file.string(), canvas))
     throw UsageError(file.string() + ": cannot write the PNG");
 }

@@ -1,8 +1,12 @@
 #pragma once
 // density.png: a colour preview of a density raster for people without a GIS: viridis colours
-// from 0 to the peak, grey where the site was not surveyed, a legend with the scale, north up.
+// from 0 to the peak, grey where the site was not surveyed, the site map's walls, trunks and
+// fences drawn over it so people can tell where they are, a legend with the scale, north up.
 
+#include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <optional>
 #include <string>
 
 #include "heatmap/raster.hpp"
@@ -13,6 +17,10 @@ struct DensityPreviewOptions {
   int max_size_px = 1200;  // the longer side of the map part
   std::string title;
   std::string unit = "items / 100 m2 / survey";
+  // The site's occupancy map: its grey level (map_server: 0 occupied .. 254 free, 205 unknown)
+  // at a point of the raster's CRS, none outside the map. Unset: no map drawn.
+  std::function<std::optional<std::uint8_t>(double x_m, double y_m)> occupancy;
+  double occupancy_cell_size_m = 0.05;  // the map's resolution: thin walls are not skipped
 };
 
 // Throws UsageError when the file cannot be written.
