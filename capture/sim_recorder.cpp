@@ -27,7 +27,7 @@ double SecondsSince(Clock::time_point start) {
 
 sim::RgbdCameraOptions CameraOptions(const sim::WorldSpec& spec, bool masks) {
   sim::RgbdCameraOptions options;
-  options.seed = spec.seed;
+  options.seed = spec.RunSeed();
   options.output_instance_ids = masks;
   options.instance_mask_every_n_frames = std::max(1, spec.truth.mask_every_n_frames);
   return options;
@@ -161,6 +161,9 @@ SimRecordResult RecordSimulation(const sim::WorldSpec& world_spec,
                                  const ProgressCallback& progress) {
   sim::WorldSpec spec = world_spec;
   if (options.seed) spec.seed = *options.seed;
+  if (options.run_seed) spec.run_seed = *options.run_seed;
+  spec.driven_route = options.route;
+  spec.DrivenRoute();  // an unknown name fails before any file is created
   const sim::Simulation simulation(spec, {options.max_duration_s});
   OutputGuard guard;
   guard.Add(bag_path);
@@ -182,6 +185,8 @@ SimRecordResult RecordSimulation(const sim::WorldSpec& world_spec,
   result.natural = world.Count(sim::ObjectKind::kNatural);
   result.objects = world.objects.size();
   result.seed = spec.seed;
+  result.run_seed = spec.RunSeed();
+  result.route = spec.driven_route.empty() ? "route" : spec.driven_route;
   result.laser = spec.robot.laser.preset;
   return result;
 }

@@ -21,7 +21,9 @@
 namespace littermap {
 
 struct SimRecordOptions {
-  std::optional<std::uint64_t> seed;  // overrides the world's seed
+  std::optional<std::uint64_t> seed;      // overrides the world's seed (world and noise)
+  std::optional<std::uint64_t> run_seed;  // sensor noise, drift and timing only: same world
+  std::string route;                      // a named route of the world; empty: `route`
   double max_duration_s = std::numeric_limits<double>::infinity();
   BagWriterOptions bag;
   int png_compression = 1;  // zlib level of the depth PNGs (capture/image_codec.hpp)
@@ -40,6 +42,8 @@ struct SimRecordResult {
   std::uint64_t natural = 0;
   std::uint64_t objects = 0;  // every primitive in the world
   std::uint64_t seed = 0;
+  std::uint64_t run_seed = 0;
+  std::string route;      // the route driven
   std::string laser;      // preset name
   double simulate_s = 0;  // wall time spent simulating, encoding and writing the messages
   double render_s = 0;    // of which rendering the RGB-D frames

@@ -1,5 +1,6 @@
 // littermap capture --camera URI --laser URI [--odometry URI] -o BAG [--duration S]
-//                   [--truth DIR] [--seed N] [--contact-sheet FILE.png]
+//                   [--truth DIR] [--seed N] [--run-seed N] [--route NAME]
+//                   [--contact-sheet FILE.png]
 // Records a run. This version knows one source, the park simulator: sim:WORLD.yaml for every
 // sensor, which makes it `littermap simulate` under the field crew's command. Real sensors
 // (OpenNI2 RGB-D, SCIP laser) are named in the error so a script fails loudly.
@@ -75,6 +76,9 @@ void RegisterCaptureCommand(CLI::App& app, CliContext& context) {
   capture->add_option("--truth", arguments->simulate.truth,
                       "sim: also write the ground truth into this directory");
   capture->add_option("--seed", arguments->simulate.seed, "sim: random seed");
+  capture->add_option("--run-seed", arguments->simulate.run_seed,
+                      "sim: seed of sensor noise only (the same park)");
+  capture->add_option("--route", arguments->simulate.route, "sim: a named route of the world");
   capture->add_option("--contact-sheet", arguments->simulate.contact_sheet,
                       "Also write a PNG of sampled colour, depth and laser frames");
   capture->callback([arguments, &context] {

@@ -1,5 +1,5 @@
-// littermap simulate WORLD.yaml -o BAG --truth TRUTH_DIR [--seed N] [--duration S]
-//                   [--contact-sheet FILE.png]
+// littermap simulate WORLD.yaml -o BAG --truth TRUTH_DIR [--seed N] [--run-seed N]
+//                   [--route NAME] [--duration S] [--contact-sheet FILE.png]
 // A survey run in a procedural park: a run bag like a real capture plus its ground truth.
 
 #include <cstdio>
@@ -17,6 +17,8 @@ void RunSimulate(const SimulateRequest& request, CliContext& context) {
   const sim::WorldSpec spec = sim::LoadWorldSpec(request.world);
   SimRecordOptions options;
   options.seed = request.seed;
+  options.run_seed = request.run_seed;
+  options.route = request.route;
   if (request.duration_s) {
     if (!(*request.duration_s > 0)) throw UsageError("--duration: must be positive");
     options.max_duration_s = *request.duration_s;
@@ -26,12 +28,14 @@ void RunSimulate(const SimulateRequest& request, CliContext& context) {
   context.FinishProgress();
   std::printf(
       "wrote %s: %llu scans (%s), %llu odometry, %llu imu, %llu rgb-d frames, %.1f s, %.1f m%s "
-      "(seed %llu, %.1f frames/s)\n",
+      "(seed %llu, run seed %llu%s%s, %.1f frames/s)\n",
       request.bag.c_str(), static_cast<unsigned long long>(result.scans), result.laser.c_str(),
       static_cast<unsigned long long>(result.odometry), static_cast<unsigned long long>(result.imu),
       static_cast<unsigned long long>(result.frames), result.duration_s, result.distance_m,
       result.route_completed ? "" : " (route cut short)",
       static_cast<unsigned long long>(result.seed),
+      static_cast<unsigned long long>(result.run_seed), request.route.empty() ? "" : ", route ",
+      request.route.c_str(),
       result.simulate_s > 0 ? static_cast<double>(result.frames) / result.simulate_s : 0.0);
   if (!request.truth.empty()) {
     std::printf("wrote %s: %llu litter, %llu natural look-alikes, %llu primitives, %llu masks\n",
@@ -61,7 +65,13 @@ void RegisterSimulateCommand(CLI::App& app, CliContext& context) {
       ->add_option("--truth", request->truth,
                    "Directory for trajectory.tum, litter.csv, natural.csv, world.json, masks/")
       ->required();
-  simulate->add_option("--seed", request->seed, "Random seed (overrides the world's seed)");
+  simulate->add_option("--seed", request->seed,
+                       "Random seed of the world and the run (overrides the world's seed)");
+  simulate->add_option("--run-seed", request->run_seed,
+                       "Random seed of sensor noise, odometry drift and timing only: the same "
+                       "park, another run");
+  simulate->add_option("--route", request->route,
+                       "Drive this route of the world's `routes` instead of `route`");
   simulate->add_option("--duration", request->duration_s,
                        "Stop after this many seconds of the route");
   simulate->add_option("--contact-sheet", request->contact_sheet,

@@ -15,6 +15,8 @@ struct SimulateRequest {
   std::string truth;          // empty: no ground truth
   std::string contact_sheet;  // empty: none
   std::optional<std::uint64_t> seed;
+  std::optional<std::uint64_t> run_seed;
+  std::string route;  // empty: the world's `route`
   std::optional<double> duration_s;
 };
 

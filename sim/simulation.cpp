@@ -46,7 +46,7 @@ Simulation::Simulation(const WorldSpec& spec, const SimulationOptions& options)
     throw BadInputError(spec.source.string() + ": route: needs at least two waypoints");
   }
   DriveOptions drive;
-  drive.speed_mps = spec.route.speed_mps;
+  drive.speed_mps = spec.DrivenRoute().speed_mps;
   drive.max_angular_speed_radps = spec.robot.max_angular_speed_radps;
   drive.rate_hz = spec.robot.odometry.rate_hz;
   drive.max_duration_s = options.max_duration_s;
@@ -54,14 +54,14 @@ Simulation::Simulation(const WorldSpec& spec, const SimulationOptions& options)
   std::vector<PlanarPose> truth;
   truth.reserve(drive_.states.size());
   for (const RobotState& state : drive_.states) truth.push_back(state.pose);
-  odometry_ = SimulateOdometry(truth, spec.robot.odometry, spec.seed);
+  odometry_ = SimulateOdometry(truth, spec.robot.odometry, spec.RunSeed());
   LaserSimulatorOptions laser;
   laser.model = LaserPreset(spec.robot.laser.preset);
   laser.range_noise_sigma_m = spec.robot.laser.range_noise_sigma_m;
   laser.mixed_pixel_probability = spec.robot.laser.mixed_pixel_probability;
   laser.dropout_probability = spec.robot.laser.dropout_probability;
   laser_ = std::make_unique<LaserSimulator>(*world_, laser);
-  camera_times_s_ = CameraTimes(spec.robot.camera, duration_s(), spec.seed);
+  camera_times_s_ = CameraTimes(spec.robot.camera, duration_s(), spec.RunSeed());
 }
 
 Eigen::Isometry3d Simulation::T_base_optical() const { return T_base_camera_ * T_body_optical(); }
@@ -81,7 +81,7 @@ std::size_t Simulation::scan_count() const {
 LaserScan Simulation::Scan(std::size_t k) const {
   const double t = ScanTime(k);
   LaserScan scan =
-      laser_->Scan(TrueBasePose(t) * T_base_laser_, FromSeconds(t), world_->spec.seed, k);
+      laser_->Scan(TrueBasePose(t) * T_base_laser_, FromSeconds(t), world_->spec.RunSeed(), k);
   scan.scan_time_s = 1.0 / scan_rate_hz_;
   return scan;
 }
@@ -98,7 +98,7 @@ ImuSample Simulation::Imu(std::size_t k) const {
   sample.t_s = static_cast<double>(k) / spec.rate_hz;
   RollPitchYaw rpy;
   const Eigen::Isometry3d T_world_base = TrueBasePose(sample.t_s, &rpy);
-  Rng rng(world_->spec.seed, 2'000'000 + k);
+  Rng rng(world_->spec.RunSeed(), 2'000'000 + k);
   const double sigma = spec.tilt_noise_deg * kDegToRad;
   // Heading from the wheel odometry: an IMU without magnetometer knows no absolute yaw.
   const double odom_t = sample.t_s * world_->spec.robot.odometry.rate_hz;

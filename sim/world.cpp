@@ -31,8 +31,10 @@ class Placer {
       return false;
     }
     const double clearance = spec.structure.route_clearance_m + radius_m;
-    for (std::size_t i = 0; i + 1 < world_.route_m.size(); ++i) {
-      if (DistanceToSegment(p, world_.route_m[i], world_.route_m[i + 1]) < clearance) return false;
+    for (const std::vector<Eigen::Vector2d>& corridor : world_.corridors_m) {
+      for (std::size_t i = 0; i + 1 < corridor.size(); ++i) {
+        if (DistanceToSegment(p, corridor[i], corridor[i + 1]) < clearance) return false;
+      }
     }
     if (!allow_path_edge && world_.terrain.DistanceToPathEdge(p) < radius_m + 0.3) return false;
     for (const Eigen::Vector2d& open : world_.open_areas_m) {
@@ -237,7 +239,9 @@ int AddObject(World& world, WorldObject object) {
 }
 
 World GenerateWorld(const WorldSpec& spec) {
-  World world{spec, Terrain(spec, spec.seed), {}, PlanRoute(spec.route), {}, {}};
+  World world{spec, Terrain(spec, spec.seed), {}, PlanRoute(spec.DrivenRoute()), {}, {}, {}};
+  world.corridors_m.push_back(PlanRoute(spec.route));
+  for (const auto& [name, route] : spec.routes) world.corridors_m.push_back(PlanRoute(route));
   Rng rng(spec.seed, 201);
   for (int i = 0; i < spec.structure.open_areas; ++i) {
     world.open_areas_m.emplace_back(rng.Uniform(0, spec.size_x_m), rng.Uniform(0, spec.size_y_m));

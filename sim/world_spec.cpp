@@ -200,10 +200,32 @@ WorldSpec ParseWorldSpec(const std::string& yaml_text, const std::filesystem::pa
   ReadNatural(fields.Child("natural"), spec.natural);
   ReadRobot(fields.Child("robot"), spec.robot);
   ReadRoute(fields.Child("route"), spec.route);
+  for (YamlFields& route_fields : fields.Children("routes")) {
+    std::string name;
+    route_fields.Read("name", name);
+    Check(route_fields, "name", !name.empty() && name != "route", "must be a non-empty name");
+    for (const auto& [known, unused] : spec.routes) {
+      Check(route_fields, "name", known != name, "'" + name + "' is used twice");
+    }
+    RouteSpec route;
+    ReadRoute(route_fields, route);
+    spec.routes.emplace_back(name, route);
+  }
   ReadBumps(fields, spec.bumps);
   ReadTruth(fields.Child("truth"), spec.truth);
   fields.Finish();
   return spec;
+}
+
+const RouteSpec& WorldSpec::DrivenRoute() const {
+  if (driven_route.empty() || driven_route == "route") return route;
+  std::string known = "route";
+  for (const auto& [route_name, named_route] : routes) {
+    if (route_name == driven_route) return named_route;
+    known += ", " + route_name;
+  }
+  throw BadInputError(source.string() + ": no route named '" + driven_route + "' (routes: " +
+                      known + ")");
 }
 
 WorldSpec LoadWorldSpec(const std::filesystem::path& path) {

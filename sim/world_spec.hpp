@@ -7,7 +7,9 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -142,8 +144,19 @@ struct WorldSpec {
   NaturalSpec natural;
   RobotSpec robot;
   RouteSpec route;
+  // More routes through the same world (YAML `routes`, each with a name): the structure keeps
+  // clear of every route, so driving any of them surveys the same park.
+  std::vector<std::pair<std::string, RouteSpec>> routes;
+  std::string driven_route;  // a name from `routes`; empty: `route`
   std::vector<BumpSpec> bumps;
   TruthSpec truth;
+  // Seeds sensor noise, odometry drift and camera timing; none: `seed` does. The world itself
+  // (terrain, objects) follows `seed` alone, so runs with different run seeds survey one park.
+  std::optional<std::uint64_t> run_seed;
+
+  std::uint64_t RunSeed() const { return run_seed.value_or(seed); }
+  // The route the robot drives. Throws BadInputError naming the known routes for an unknown name.
+  const RouteSpec& DrivenRoute() const;
 };
 
 // Throws BadInputError naming the file and key on a malformed or unknown key, or an invalid

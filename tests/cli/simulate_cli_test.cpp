@@ -70,6 +70,36 @@ TEST(SimulateCli, SampleWorldGivesBagAndTruth) {
 }
 
 // `capture` with simulator sources is `simulate`: the same bag for the same world and seed.
+TEST(SimulateCli, AnotherRouteAndRunSeedOfTheSamePark) {
+  testing::TempDir dir;
+  const std::filesystem::path large =
+      std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "worlds" / "park_large.yaml";
+  const auto run = [&](const std::string& name, const std::string& flags) {
+    return RunLittermap("simulate " + Quote(large) + " -o " + Quote(dir / (name + "_bag")) +
+                        " --truth " + Quote(dir / name) + " --duration 1 " + flags);
+  };
+  const auto lanes = run("lanes", "");
+  ASSERT_EQ(lanes.exit_code, 0) << lanes.output;
+  const auto perimeter = run("perimeter", "--route perimeter --run-seed 7");
+  ASSERT_EQ(perimeter.exit_code, 0) << perimeter.output;
+  EXPECT_NE(perimeter.output.find("(seed 11, run seed 7, route perimeter,"), std::string::npos)
+      << perimeter.output;
+  const auto world = [&](const std::string& name) {
+    return nlohmann::json::parse(std::ifstream(dir / name / "world.json"));
+  };
+  EXPECT_EQ(world("lanes").at("objects"), world("perimeter").at("objects"));  // one park
+  EXPECT_NE(world("lanes").at("route_m"), world("perimeter").at("route_m"));
+  EXPECT_EQ(world("perimeter").at("route"), "perimeter");
+  EXPECT_EQ(world("perimeter").at("run_seed"), 7);
+
+  const auto unknown = run("unknown", "--route lawn");
+  EXPECT_EQ(unknown.exit_code, 2) << unknown.output;
+  EXPECT_NE(unknown.output.find("no route named 'lawn' (routes: route, perimeter, diagonals)"),
+            std::string::npos)
+      << unknown.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "unknown_bag"));
+}
+
 TEST(SimulateCli, CaptureFromSimSourcesIsSimulate) {
   testing::TempDir dir;
   const std::string sim = "sim:" + kWorld.string();

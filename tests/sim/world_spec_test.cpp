@@ -30,6 +30,8 @@ TEST(WorldSpec, SamplesLoad) {
   EXPECT_EQ(small.robot.laser.preset, "urg-04lx");
   const WorldSpec large = LoadWorldSpec(SampleWorld("park_large.yaml"));
   EXPECT_EQ(large.route.type, "lawnmower");
+  ASSERT_EQ(large.routes.size(), 2u);
+  EXPECT_EQ(large.routes[0].first, "perimeter");
   EXPECT_EQ(large.robot.laser.preset, "utm-30lx");
   EXPECT_DOUBLE_EQ(large.size_x_m, 150);
   // The Kinect mount: about 0.5 m up, pitched about 25° down, 10 Hz.

@@ -4,6 +4,8 @@
 
 #include <map>
 
+#include "core/error.hpp"
+#include "sim/simulation.hpp"
 #include "sim/terrain.hpp"
 #include "sim/world.hpp"
 #include "sim_test_support.hpp"
@@ -31,6 +33,57 @@ TEST(World, SameSeedSameWorldOtherSeedOtherWorld) {
   EXPECT_TRUE(SameObjects(a, b));
   spec.seed += 1;
   EXPECT_FALSE(SameObjects(a, GenerateWorld(spec)));
+}
+
+// park_large has three routes from one dock: driving any of them, with any run seed, is a
+// survey of the same park, and every route's corridor is clear.
+TEST(World, EveryRouteSurveysTheSameParkAndIsClear) {
+  WorldSpec spec = LoadWorldSpec(SampleWorld("park_large.yaml"));
+  const World lanes = GenerateWorld(spec);
+  spec.driven_route = "perimeter";
+  spec.run_seed = 99;
+  const World perimeter = GenerateWorld(spec);
+  spec.driven_route = "diagonals";
+  const World diagonals = GenerateWorld(spec);
+  EXPECT_TRUE(SameObjects(lanes, perimeter));
+  EXPECT_TRUE(SameObjects(lanes, diagonals));
+  EXPECT_NE(lanes.route_m, perimeter.route_m);
+  ASSERT_EQ(diagonals.corridors_m.size(), 3u);
+  for (const WorldObject& o : diagonals.objects) {
+    if (o.kind == ObjectKind::kLitter || o.kind == ObjectKind::kNatural ||
+        o.label == "tree_crown") {
+      continue;
+    }
+    for (const auto& corridor : diagonals.corridors_m) {
+      for (std::size_t i = 0; i + 1 < corridor.size(); ++i) {
+        EXPECT_GT(DistanceToSegment(o.center_m.head<2>(), corridor[i], corridor[i + 1]),
+                  spec.structure.route_clearance_m)
+            << o.label << " " << o.id;
+      }
+    }
+  }
+  spec.driven_route = "lawn";
+  try {
+    spec.DrivenRoute();
+    FAIL() << "accepted an unknown route";
+  } catch (const BadInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no route named 'lawn' (routes: route, perimeter, "
+                                         "diagonals)"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(World, TheRunSeedChangesTheSensorsNotThePark) {
+  WorldSpec spec = LoadWorldSpec(SampleWorld());
+  const Simulation first(spec, {20});
+  spec.run_seed = spec.seed + 1;
+  const Simulation second(spec, {20});
+  EXPECT_TRUE(SameObjects(first.world(), second.world()));
+  ASSERT_EQ(first.states().size(), second.states().size());
+  EXPECT_EQ(first.states().back().pose.x_m, second.states().back().pose.x_m);  // same drive
+  EXPECT_NE(first.odometry().back().x_m, second.odometry().back().x_m);        // other drift
+  EXPECT_NE(first.Scan(50).ranges_m, second.Scan(50).ranges_m);                // other noise
 }
 
 TEST(World, CountsAndClassMixMatchTheSpec) {
