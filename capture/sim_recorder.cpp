@@ -154,16 +154,21 @@ class RunRecorder {
 
 }  // namespace
 
-SimRecordResult RecordSimulation(const sim::WorldSpec& world_spec,
-                                 const std::filesystem::path& bag_path,
-                                 const std::filesystem::path& truth_dir,
-                                 const SimRecordOptions& options,
-                                 const ProgressCallback& progress) {
+sim::WorldSpec RunSpec(const sim::WorldSpec& world_spec, const SimRecordOptions& options) {
   sim::WorldSpec spec = world_spec;
   if (options.seed) spec.seed = *options.seed;
   if (options.run_seed) spec.run_seed = *options.run_seed;
   spec.driven_route = options.route;
   spec.DrivenRoute();  // an unknown name fails before any file is created
+  return spec;
+}
+
+SimRecordResult RecordSimulation(const sim::WorldSpec& world_spec,
+                                 const std::filesystem::path& bag_path,
+                                 const std::filesystem::path& truth_dir,
+                                 const SimRecordOptions& options,
+                                 const ProgressCallback& progress) {
+  const sim::WorldSpec spec = RunSpec(world_spec, options);
   const sim::Simulation simulation(spec, {options.max_duration_s});
   OutputGuard guard;
   guard.Add(bag_path);

@@ -49,6 +49,10 @@ struct SimRecordResult {
   double render_s = 0;    // of which rendering the RGB-D frames
 };
 
+// The world spec of the run `options` ask for: seed, run seed and route applied. Throws
+// BadInputError for an unknown route.
+sim::WorldSpec RunSpec(const sim::WorldSpec& spec, const SimRecordOptions& options);
+
 // Writes the bag, and the ground truth into truth_dir unless it is empty. Throws BadInputError
 // for a bad world spec, UsageError when the bag directory is not empty, InternalError on write
 // failures; on error nothing it created is left behind. Reports progress in camera frames.

@@ -8,6 +8,7 @@
 #include "capture/contact_sheet.hpp"
 #include "capture/sim_recorder.hpp"
 #include "cli/simulate_run.hpp"
+#include "cli/truth_map.hpp"
 #include "core/error.hpp"
 #include "sim/world_spec.hpp"
 
@@ -38,7 +39,10 @@ void RunSimulate(const SimulateRequest& request, CliContext& context) {
       request.route.c_str(),
       result.simulate_s > 0 ? static_cast<double>(result.frames) / result.simulate_s : 0.0);
   if (!request.truth.empty()) {
-    std::printf("wrote %s: %llu litter, %llu natural look-alikes, %llu primitives, %llu masks\n",
+    WriteTruthMap(sim::Simulation(RunSpec(spec, options), {options.max_duration_s}),
+                  request.truth);
+    std::printf("wrote %s: %llu litter, %llu natural look-alikes, %llu primitives, %llu masks, "
+                "map.pgm\n",
                 request.truth.c_str(), static_cast<unsigned long long>(result.litter),
                 static_cast<unsigned long long>(result.natural),
                 static_cast<unsigned long long>(result.objects),
