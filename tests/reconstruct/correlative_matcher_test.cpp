@@ -16,10 +16,7 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180;
 
-Points2 RoomPoints(const PlanarPose& pose) {
-  return VoxelDownsample(ScanToPoints(testing::ScanFrom(testing::Room(), pose), {}, {}).points_base,
-                         0.05);
-}
+using testing::RoomPoints;
 
 TEST(CorrelativeMatcher, FindsAPoseFarFromTheGuess) {
   // Target: the room seen from (3, 2, 0), in the world frame. Source: seen from (6.5, 4.2, 0.2).

@@ -17,10 +17,7 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180;
 
-Points2 RoomPoints(const PlanarPose& pose) {
-  return VoxelDownsample(ScanToPoints(testing::ScanFrom(testing::Room(), pose), {}, {}).points_base,
-                         0.05);
-}
+using testing::RoomPoints;
 
 class IcpModes : public ::testing::TestWithParam<bool> {};
 

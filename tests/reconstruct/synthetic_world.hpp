@@ -10,6 +10,7 @@
 
 #include "core/laser_scan.hpp"
 #include "core/planar_pose.hpp"
+#include "reconstruct/scan_points.hpp"
 
 namespace littermap::testing {
 
@@ -64,6 +65,12 @@ inline LaserScan ScanFrom(const std::vector<Segment>& walls, const PlanarPose& p
     scan.ranges_m.push_back(static_cast<float>(std::min(r, 30.0)));
   }
   return scan;
+}
+
+// The room seen from `pose`: scan points in the base frame, one per 5 cm voxel.
+inline reconstruct::Points2 RoomPoints(const PlanarPose& pose) {
+  return reconstruct::VoxelDownsample(
+      reconstruct::ScanToPoints(ScanFrom(Room(), pose), {}, {}).points_base, 0.05);
 }
 
 }  // namespace littermap::testing
