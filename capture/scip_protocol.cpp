@@ -149,12 +149,13 @@ namespace {
 // "KEY:VALUE;S" with S the sum of "KEY:VALUE" (or of "KEY:VALUE;").
 std::pair<std::string, std::string> ParseInfoLine(const std::string& line,
                                                   const std::string& context) {
+  // The separator is the second-to-last character: the sum itself may be ';' (sum & 0x3F = 11).
   const std::size_t colon = line.find(':');
-  const std::size_t semicolon = line.rfind(';');
-  if (colon == std::string::npos || semicolon == std::string::npos || semicolon < colon ||
-      semicolon + 2 != line.size()) {
+  if (line.size() < 3 || line[line.size() - 2] != ';' || colon == std::string::npos ||
+      colon >= line.size() - 2) {
     Malformed(context, "malformed parameter", line);
   }
+  const std::size_t semicolon = line.size() - 2;
   const std::string_view text(line.data(), semicolon);
   const char sum = line.back();
   if (ScipChecksum(text) != sum &&

@@ -129,6 +129,14 @@ TEST(ScipProtocol, SplitsAndParsesAReply) {
             std::string::npos);
 }
 
+TEST(ScipProtocol, ASumThatIsItselfASemicolonParses) {
+  // The sums of "DMIN:27" and "SERI:H1000005" are both ';' (sum & 0x3F = 11).
+  ASSERT_EQ(ScipChecksum("DMIN:27"), ';');
+  const std::vector<std::string> version = {"SERI:H1000005;;"};
+  EXPECT_EQ(ParseScipInfo(version, "t").at("SERI"), "H1000005");
+  EXPECT_THROW(ParseScipInfo(std::vector<std::string>{"SERI:H1000005;"}, "t"), BadInputError);
+}
+
 TEST(ScipProtocol, ParsesParametersWithEitherSumConvention) {
   auto line = [](const std::string& text, bool with_semicolon) {
     return text + ";" + ScipChecksum(with_semicolon ? text + ";" : text);
