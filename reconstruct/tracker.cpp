@@ -170,6 +170,8 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
     }
     if (step.information.isZero()) {
       step.routine = Routine::kOdometryOnly;
+    } else if (step.routine == Routine::kRgbd) {
+      // Routine 3 runs because the prediction failed to match: it is not fused with it.
     } else if (step.odometry_used && anchor_) {
       // The odometry since the anchor, not since the last scan: a match that slides a little
       // every scan cannot add the slides up between two key frames.
@@ -190,6 +192,9 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
   }
   step.T_world_base = pose_;
   last_stamp_ns_ = input.stamp_ns;
+  // Without odometry at this scan the next increment would span the gap on top of the motion
+  // already predicted for it: start over from the next odometry.
+  last_odom_.reset();
   if (input.T_odom_base && Finite(*input.T_odom_base)) last_odom_ = input.T_odom_base;
 
   // Routine 2 success forces a key frame: "fuse the scan so the global map learns".
