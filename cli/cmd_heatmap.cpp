@@ -78,25 +78,8 @@ void RunHeatmap(HeatmapArguments arguments, CliContext& context) {
       ")";
   if (std::optional<db::SiteMapRecord> site_map = site.SiteMap()) {
     preview.occupancy_cell_size_m = site_map->resolution_m;
-    preview.occupancy = [site_map = std::move(*site_map), frame](
-                            double x_m, double y_m) -> std::optional<std::uint8_t> {
-      const db::PointXY in_site = frame.FromCrs({x_m, y_m});
-      // Into the map's frame: the inverse of T_site_map.
-      const PlanarPose& T = site_map.T_site_map;
-      const double dx = in_site.x - T.x_m, dy = in_site.y - T.y_m;
-      const double c = std::cos(T.theta_rad), s = std::sin(T.theta_rad);
-      const double mx = c * dx + s * dy, my = -s * dx + c * dy;
-      const auto column =
-          static_cast<long>(std::floor((mx - site_map.origin_x_m) / site_map.resolution_m));
-      const auto from_bottom =
-          static_cast<long>(std::floor((my - site_map.origin_y_m) / site_map.resolution_m));
-      if (column < 0 || from_bottom < 0 || column >= site_map.width ||
-          from_bottom >= site_map.height) {
-        return std::nullopt;
-      }
-      return site_map.pixels[static_cast<std::size_t>((site_map.height - 1 - from_bottom) *
-                                                          site_map.width +
-                                                      column)];
+    preview.occupancy = [site_map = std::move(*site_map), frame](double x_m, double y_m) {
+      return site_map.GreyAt(frame.FromCrs({x_m, y_m}));
     };
   }
   heatmap::WriteDensityPreview(dir / "density.png", map.density.density, nodata, preview);

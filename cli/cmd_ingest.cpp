@@ -62,8 +62,9 @@ void PlaceRun(const IngestArguments& arguments, db::SiteDatabase& site, heatmap:
   run->T_site_run = by_hand ? PoseArgument(arguments.transform) : PoseArgument(arguments.initial);
   if (!std::filesystem::exists(map_yaml)) {
     if (!by_hand) {
-      std::printf("%s: no map.yaml; the run is taken to be in the site frame\n",
-                  arguments.run_dir.c_str());
+      std::printf("%s: no map.yaml to match; the run is placed where it starts (%s)\n",
+                  arguments.run_dir.c_str(),
+                  arguments.initial.empty() ? "the dock, the site origin" : "--initial");
     }
     return;
   }
@@ -85,18 +86,25 @@ void PlaceRun(const IngestArguments& arguments, db::SiteDatabase& site, heatmap:
   site_image.pixels = site_map->pixels;
   reconstruct::Points2 site_points = reconstruct::OccupiedCellCentres(site_image);
   for (Eigen::Vector2d& p : site_points) p = reconstruct::Transform(site_map->T_site_map, p);
+  constexpr std::uint8_t kUnknownGrey = 205;  // map_server
   const reconstruct::MapRegistrationResult registration = reconstruct::RegisterMap(
       site_points, reconstruct::OccupiedCellCentres(run_map), run->T_site_run,
-      arguments.registration);
+      arguments.registration, [&](const Eigen::Vector2d& p) {
+        const std::optional<std::uint8_t> grey = site_map->GreyAt({p.x(), p.y()});
+        return grey && *grey != kUnknownGrey;
+      });
   if (!registration.registered) {
-    char detail[160];
-    std::snprintf(detail, sizeof detail, "matching ratio %.2f, needs %.2f",
-                  registration.matching_ratio, arguments.registration.min_matching_ratio);
+    char detail[200];
+    std::snprintf(detail, sizeof detail,
+                  " within %.1f m of where it starts (matching ratio %.2f, needs %.2f, over %zu "
+                  "points where the site map knows the ground, needs %zu)",
+                  arguments.registration.window_m, registration.matching_ratio,
+                  arguments.registration.min_matching_ratio, registration.overlap_points,
+                  arguments.registration.min_overlap_points);
     throw BadInputError(
         map_yaml.string() + ": the run's map does not match the site map of " + arguments.site +
-        " within " + std::to_string(arguments.registration.window_m).substr(0, 4) +
-        " m of where it starts (" + detail +
-        "). If the run did not start at the dock give --initial X Y DEG near its start, or place "
+        detail +
+        ". If the run did not start at the dock give --initial X Y DEG near its start, or place "
         "it by hand with --transform X Y DEG");
   }
   run->T_site_run = registration.T_site_run;
@@ -117,6 +125,27 @@ std::vector<PlanarPose> PlanarTrajectory(const std::vector<TumPose>& poses) {
     planar.push_back({pose.position_m.x(), pose.position_m.y(), yaw});
   }
   return planar;
+}
+
+// Places the run (unless it is already in the site) and ingests it. If another process's run
+// defined the site map in between, the run is placed again, now against that map.
+heatmap::IngestResult PlaceAndIngest(const IngestArguments& arguments, db::SiteDatabase& site,
+                                     const heatmap::RunInput& run_frame) {
+  for (int attempt = 0;; ++attempt) {
+    heatmap::RunInput run = run_frame;
+    if (!site.FindRun(run.source_digest)) PlaceRun(arguments, site, &run);
+    for (PlanarPose& pose : run.T_site_base) pose = Compose(run.T_site_run, pose);
+    for (heatmap::RunItem& item : run.items) {
+      const Eigen::Vector2d p =
+          reconstruct::Transform(run.T_site_run, Eigen::Vector2d(item.xy.x, item.xy.y));
+      item.xy = {p.x(), p.y()};
+    }
+    try {
+      return heatmap::IngestRun(site, run, arguments.options);
+    } catch (const heatmap::SiteMapDefinedMeanwhile&) {
+      if (attempt > 0) throw;
+    }
+  }
 }
 
 void RunIngest(IngestArguments arguments, CliContext& context) {
@@ -146,13 +175,7 @@ void RunIngest(IngestArguments arguments, CliContext& context) {
     run.end_time_s = ToSeconds(poses.back().stamp_ns);
   }
   run.items = heatmap::ReadRunItems(items_file);
-  if (!site.FindRun(run.source_digest)) PlaceRun(arguments, site, &run);
-  for (PlanarPose& pose : run.T_site_base) pose = Compose(run.T_site_run, pose);
-  for (heatmap::RunItem& item : run.items) {
-    const Eigen::Vector2d p = reconstruct::Transform(run.T_site_run, Eigen::Vector2d(item.xy.x, item.xy.y));
-    item.xy = {p.x(), p.y()};
-  }
-  const heatmap::IngestResult result = heatmap::IngestRun(site, run, arguments.options);
+  const heatmap::IngestResult result = PlaceAndIngest(arguments, site, run);
   if (result.already_ingested) {
     std::printf("Run %s is already in %s as run %lld; nothing changed\n", run.name.c_str(),
                 arguments.site.c_str(), static_cast<long long>(result.run_id));

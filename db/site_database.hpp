@@ -57,6 +57,9 @@ struct SiteMapRecord {
   double occupied_threshold = 0.65;
   PlanarPose T_site_map;
   std::vector<std::uint8_t> pixels;  // map_server grey levels, row-major, top row first
+
+  // The grey level of the cell under a point of the site frame; none outside the map.
+  std::optional<std::uint8_t> GreyAt(const PointXY& site_xy) const;
 };
 
 struct ItemRecord {

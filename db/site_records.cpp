@@ -68,6 +68,20 @@ std::vector<RunRecord> SiteDatabase::Runs() {
   return runs;
 }
 
+std::optional<std::uint8_t> SiteMapRecord::GreyAt(const PointXY& site_xy) const {
+  // Into the map's frame: the inverse of T_site_map.
+  const double dx = site_xy.x - T_site_map.x_m, dy = site_xy.y - T_site_map.y_m;
+  const double c = std::cos(T_site_map.theta_rad), s = std::sin(T_site_map.theta_rad);
+  const double x = c * dx + s * dy, y = -s * dx + c * dy;
+  const double column = std::floor((x - origin_x_m) / resolution_m);
+  const double from_bottom = std::floor((y - origin_y_m) / resolution_m);
+  if (!(column >= 0 && from_bottom >= 0 && column < width && from_bottom < height)) {
+    return std::nullopt;
+  }
+  const auto row = static_cast<std::size_t>(height - 1 - static_cast<int>(from_bottom));
+  return pixels[row * static_cast<std::size_t>(width) + static_cast<std::size_t>(column)];
+}
+
 std::optional<SiteMapRecord> SiteDatabase::SiteMap() {
   SqliteStatement query = database_.Prepare(
       "SELECT run_id, resolution_m, origin_x_m, origin_y_m, width, height, occupied_threshold, "

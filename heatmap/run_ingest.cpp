@@ -161,7 +161,11 @@ IngestResult IngestRun(db::SiteDatabase& site, const RunInput& run, const Ingest
     result.run_id = site.AddRun({0, run.name, run.source_digest, run.start_time_s,
                                  run.end_time_s, result.length_m, run.T_site_run,
                                  run.registration_quality});
-    if (run.site_map && !site.SiteMap()) {  // two first runs at once: the first one wins
+    if (run.site_map && site.SiteMap()) {
+      throw SiteMapDefinedMeanwhile(site.sql().file().string() +
+                                    ": another run defined the site map meanwhile");
+    }
+    if (run.site_map) {
       db::SiteMapRecord map = *run.site_map;
       map.run_id = result.run_id;
       site.SetSiteMap(map);

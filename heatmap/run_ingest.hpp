@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/planar_pose.hpp"
 #include "db/site_database.hpp"
 #include "heatmap/run_items.hpp"
@@ -54,6 +55,13 @@ struct IngestResult {
   std::size_t items_unobserved = 0;  // dropped (drop_unobserved_items)
   double observed_area_m2 = 0.0;
   double length_m = 0.0;
+};
+
+// Thrown by IngestRun when the run was to define the site map but another process's run did so
+// first (two first runs at once): place the run against that map, then ingest it again.
+class SiteMapDefinedMeanwhile : public BadInputError {
+ public:
+  using BadInputError::BadInputError;
 };
 
 // Throws BadInputError when the run has fewer than two poses.

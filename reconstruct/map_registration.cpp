@@ -19,7 +19,8 @@ void MapRegistrationOptions::Validate() const {
 
 MapRegistrationResult RegisterMap(const Points2& site_points, const Points2& run_points,
                                   const PlanarPose& initial_T_site_run,
-                                  const MapRegistrationOptions& options) {
+                                  const MapRegistrationOptions& options,
+                                  const std::function<bool(const Eigen::Vector2d&)>& site_known) {
   options.Validate();
   MapRegistrationResult result;
   result.T_site_run = initial_T_site_run;
@@ -34,9 +35,24 @@ MapRegistrationResult RegisterMap(const Points2& site_points, const Points2& run
   result.correlative_score = coarse.score;
   const IcpTarget target(std::move(site), options.icp);
   const IcpResult fine = MatchIcp(run, target, coarse.T_target_source, options.icp);
-  result.matching_ratio = fine.inlier_ratio;
-  if (fine.converged) result.T_site_run = fine.T_target_source;
-  result.registered = fine.converged && fine.inlier_ratio >= options.min_matching_ratio;
+  if (!fine.converged) return result;
+  result.T_site_run = fine.T_target_source;
+  const double inlier_sq = options.icp.inlier_distance_m * options.icp.inlier_distance_m;
+  std::size_t inliers = 0;
+  for (const Eigen::Vector2d& p : run) {
+    const Eigen::Vector2d in_site = Transform(result.T_site_run, p);
+    if (site_known && !site_known(in_site)) continue;
+    ++result.overlap_points;
+    std::size_t nearest = 0;
+    double distance_sq = 0;
+    if (target.Nearest(in_site, &nearest, &distance_sq) && distance_sq <= inlier_sq) ++inliers;
+  }
+  if (result.overlap_points > 0) {
+    result.matching_ratio =
+        static_cast<double>(inliers) / static_cast<double>(result.overlap_points);
+  }
+  result.registered = result.overlap_points >= options.min_overlap_points &&
+                      result.matching_ratio >= options.min_matching_ratio;
   return result;
 }
 

@@ -6,6 +6,7 @@
 // recognition, is refused rather than stored in the wrong place.
 
 #include <cstddef>
+#include <functional>
 
 #include "core/planar_pose.hpp"
 #include "reconstruct/correlative_matcher.hpp"
@@ -21,6 +22,10 @@ struct MapRegistrationOptions {
   // Accepted when at least this share of the run's points lies within inlier_distance_m of the
   // site's after ICP.
   double min_matching_ratio = 0.5;
+  // The ratio counts only run points where the site map knows the ground (free or occupied):
+  // a run that maps more of the park than the site map is not refused for it. At least this
+  // many such points are needed.
+  std::size_t min_overlap_points = 100;
   CorrelativeOptions correlative{0.1, 0.15, 8, 0.4, 1e6, 400};
   IcpOptions icp;
   void Validate() const;
@@ -29,14 +34,18 @@ struct MapRegistrationOptions {
 struct MapRegistrationResult {
   bool registered = false;
   PlanarPose T_site_run;
-  double matching_ratio = 0;     // share of the run's points on the site's, in [0, 1]
+  double matching_ratio = 0;     // share of the overlapping run points on the site's, [0, 1]
+  std::size_t overlap_points = 0;  // run points where the site map knows the ground
   double correlative_score = 0;  // of the coarse match, in [0, 1]
   std::size_t run_points = 0;
   std::size_t site_points = 0;
 };
 
+// site_known: whether the site map knows the ground at a point of the site frame; unset: it
+// knows it everywhere.
 MapRegistrationResult RegisterMap(const Points2& site_points, const Points2& run_points,
                                   const PlanarPose& initial_T_site_run,
-                                  const MapRegistrationOptions& options);
+                                  const MapRegistrationOptions& options,
+                                  const std::function<bool(const Eigen::Vector2d&)>& site_known = {});
 
 }  // namespace littermap::reconstruct

@@ -48,6 +48,27 @@ TEST(MapRegistration, FindsARunMapUnderAKnownOffset) {
   EXPECT_GT(result.matching_ratio, 0.95);
 }
 
+TEST(MapRegistration, ARunThatMapsMoreThanTheSiteIsJudgedWhereTheyOverlap) {
+  // The site map knows the west part of the room (x < 6 m); the run mapped all of it.
+  Points2 site;
+  for (const Eigen::Vector2d& p : WallPoints(testing::Room(), 0.01, 1)) {
+    if (p.x() < 6) site.push_back(p);
+  }
+  const PlanarPose T_site_run{0.6, 0.4, 0.05};
+  Points2 run;
+  for (const Eigen::Vector2d& p : WallPoints(testing::Room(), 0.01, 2)) {
+    run.push_back(Transform(Inverse(T_site_run), p));
+  }
+  const auto known = [](const Eigen::Vector2d& p) { return p.x() < 6; };
+  const MapRegistrationResult overlap = RegisterMap(site, run, {}, {}, known);
+  ASSERT_TRUE(overlap.registered) << overlap.matching_ratio;
+  EXPECT_GT(overlap.matching_ratio, 0.95);
+  EXPECT_NEAR(overlap.T_site_run.x_m, T_site_run.x_m, 0.03);
+  EXPECT_NEAR(overlap.T_site_run.y_m, T_site_run.y_m, 0.03);
+  // Counted over the whole run map, the east half would have looked like a mismatch.
+  EXPECT_LT(RegisterMap(site, run, {}, {}).matching_ratio, 0.7);
+}
+
 TEST(MapRegistration, RefusesADifferentPlace) {
   // A long corridor does not fit in the room anywhere.
   const std::vector<testing::Segment> corridor = {{{0, 0}, {30, 0}}, {{0, 2}, {30, 2}},
