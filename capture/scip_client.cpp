@@ -104,13 +104,23 @@ ScipReply ScipClient::Transact(const std::string& command) {
   return reply;
 }
 
+void ScipClient::ThrowIfQtIgnored(int frames_skipped) const {
+  // Frames in flight when QT went out are a few; a sensor still streaming after this many
+  // (5 s at 40 Hz) did not take the command.
+  constexpr int kMaxFramesAfterQt = 200;
+  if (frames_skipped >= kMaxFramesAfterQt) {
+    throw ScipDisconnectedError(uri() + ": sensor keeps streaming and does not answer QT");
+  }
+}
+
 void ScipClient::Handshake() {
   // A sensor left streaming by an earlier client keeps sending frames: stop it and skip
   // everything up to the QT reply.
   transport_->Write("QT\n");
-  for (;;) {
+  for (int skipped = 0;; ++skipped) {
     const std::vector<std::string> lines = ReadReplyLines(options_.reply_timeout_s);
     if (lines.front().starts_with("QT")) break;
+    ThrowIfQtIgnored(skipped);
   }
   handshake_.scip2_status = Transact("SCIP2.0").status.code;
   handshake_.version = ParseScipInfo(Transact("VV").body, Context("VV"));
@@ -180,9 +190,12 @@ ScipScan ScipClient::ReadScan() {
 void ScipClient::Stop() {
   transport_->Write("QT\n");
   measuring_ = false;
-  for (;;) {  // frames already sent come first
+  for (int skipped = 0;; ++skipped) {  // frames already sent come first
     const std::vector<std::string> lines = ReadReplyLines(options_.reply_timeout_s);
-    if (!lines.front().starts_with("QT")) continue;
+    if (!lines.front().starts_with("QT")) {
+      ThrowIfQtIgnored(skipped);
+      continue;
+    }
     const ScipReply reply = ParseScipReply(lines, "QT", Context("QT"));
     if (!ScipStatusAccepted("QT", reply.status.code)) {
       throw BadInputError(Context("QT") + ": sensor reports error status " + reply.status.code +

@@ -75,6 +75,8 @@ class ScipClient {
 
  private:
   void Handshake();
+  // Throws ScipDisconnectedError once too many frames came after a QT.
+  void ThrowIfQtIgnored(int frames_skipped) const;
   // Sends `command` + LF and returns the checked reply.
   ScipReply Transact(const std::string& command);
   // One reply's lines (without LFs and the closing empty line); `first_line_ns` gets the host

@@ -362,6 +362,22 @@ TEST(ScipClient, StopsASensorLeftStreaming) {
   ExpectEmulatorScan(client.ReadScan(), options);
 }
 
+TEST(ScipClient, ASensorThatIgnoresQtIsADisconnectNotAHang) {
+  ScipEmulatorOptions options;
+  options.ignores_qt = true;
+  options.scan_period_ms = 1;
+  ScipEmulator emulator(ScipEmulator::Link::kTcp, options);
+  ScipClient client(emulator.uri(), FastOptions());
+  client.StartMeasurement();
+  client.ReadScan();
+  try {
+    client.Stop();
+    FAIL() << "Stop returned although the sensor never answered QT";
+  } catch (const ScipDisconnectedError& e) {
+    EXPECT_NE(std::string(e.what()).find("does not answer QT"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ScipClient, UnwrapsTheSensorClock) {
   ScipEmulatorOptions options;
   options.first_timestamp_ms = (1u << 24) - 25;  // wraps between the 3rd and 4th frame

@@ -179,7 +179,9 @@ void ScipEmulator::Handle(const std::string& command) {
     std::lock_guard<std::mutex> lock(mutex_);
     commands_.push_back(command);
   }
-  if (command == "QT") {
+  if (command == "QT" && options_.ignores_qt && streaming_) {
+    return;
+  } else if (command == "QT") {
     streaming_ = false;
     out_ += "QT\n00P\n\n";
   } else if (command == "SCIP2.0") {

@@ -34,6 +34,7 @@ struct ScipEmulatorOptions {
   int long_line_frame = -1;          // a data line of 70 characters (valid sum) in this frame
   int error_status_frame = -1;       // this frame is status 50 (hardware trouble) only
   bool bad_checksum_pp = false;      // a wrong sum on PP's DMAX line
+  bool ignores_qt = false;           // while streaming, QT is not answered and frames go on
 };
 
 // The reading (mm) the emulator reports for `step` in frame `frame`: every step ≡ 7 (mod 100)
