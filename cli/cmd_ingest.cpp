@@ -17,6 +17,7 @@
 #include "capture/tum_trajectory.hpp"
 #include "cli/cli_context.hpp"
 #include "core/error.hpp"
+#include "core/map_server_grey.hpp"
 #include "db/site_database.hpp"
 #include "heatmap/run_ingest.hpp"
 #include "reconstruct/map_registration.hpp"
@@ -54,6 +55,18 @@ db::SiteMapRecord SiteMapFrom(const reconstruct::OccupancyMapImage& map,
   return record;
 }
 
+reconstruct::OccupancyMapImage ImageOf(const db::SiteMapRecord& record) {
+  reconstruct::OccupancyMapImage map;
+  map.resolution_m = record.resolution_m;
+  map.origin_x_m = record.origin_x_m;
+  map.origin_y_m = record.origin_y_m;
+  map.width = record.width;
+  map.height = record.height;
+  map.occupied_threshold = record.occupied_threshold;
+  map.pixels = record.pixels;
+  return map;
+}
+
 // Where the run's frame sits in the site: by hand, by matching its map onto the site map, or
 // (first run, no map) the site frame itself.
 void PlaceRun(const IngestArguments& arguments, db::SiteDatabase& site, heatmap::RunInput* run) {
@@ -76,22 +89,13 @@ void PlaceRun(const IngestArguments& arguments, db::SiteDatabase& site, heatmap:
     return;
   }
   if (by_hand) return;
-  reconstruct::OccupancyMapImage site_image;
-  site_image.resolution_m = site_map->resolution_m;
-  site_image.origin_x_m = site_map->origin_x_m;
-  site_image.origin_y_m = site_map->origin_y_m;
-  site_image.width = site_map->width;
-  site_image.height = site_map->height;
-  site_image.occupied_threshold = site_map->occupied_threshold;
-  site_image.pixels = site_map->pixels;
-  reconstruct::Points2 site_points = reconstruct::OccupiedCellCentres(site_image);
+  reconstruct::Points2 site_points = reconstruct::OccupiedCellCentres(ImageOf(*site_map));
   for (Eigen::Vector2d& p : site_points) p = reconstruct::Transform(site_map->T_site_map, p);
-  constexpr std::uint8_t kUnknownGrey = 205;  // map_server
   const reconstruct::MapRegistrationResult registration = reconstruct::RegisterMap(
       site_points, reconstruct::OccupiedCellCentres(run_map), run->T_site_run,
       arguments.registration, [&](const Eigen::Vector2d& p) {
         const std::optional<std::uint8_t> grey = site_map->GreyAt({p.x(), p.y()});
-        return grey && *grey != kUnknownGrey;
+        return grey && *grey != map_grey::kUnknown;
       });
   if (!registration.registered) {
     char detail[200];
@@ -109,10 +113,11 @@ void PlaceRun(const IngestArguments& arguments, db::SiteDatabase& site, heatmap:
   }
   run->T_site_run = registration.T_site_run;
   run->registration_quality = registration.matching_ratio;
-  std::printf("Registered onto the site map: x %.2f m, y %.2f m, yaw %.2f deg (matching ratio "
-              "%.2f)\n",
-              run->T_site_run.x_m, run->T_site_run.y_m,
-              run->T_site_run.theta_rad * 180 / std::numbers::pi, registration.matching_ratio);
+  std::printf(
+      "Registered onto the site map: x %.2f m, y %.2f m, yaw %.2f deg (matching ratio "
+      "%.2f)\n",
+      run->T_site_run.x_m, run->T_site_run.y_m, run->T_site_run.theta_rad * 180 / std::numbers::pi,
+      registration.matching_ratio);
 }
 
 std::vector<PlanarPose> PlanarTrajectory(const std::vector<TumPose>& poses) {

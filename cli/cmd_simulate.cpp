@@ -39,14 +39,14 @@ void RunSimulate(const SimulateRequest& request, CliContext& context) {
       request.route.c_str(),
       result.simulate_s > 0 ? static_cast<double>(result.frames) / result.simulate_s : 0.0);
   if (!request.truth.empty()) {
-    WriteTruthMap(sim::Simulation(RunSpec(spec, options), {options.max_duration_s}),
-                  request.truth);
-    std::printf("wrote %s: %llu litter, %llu natural look-alikes, %llu primitives, %llu masks, "
-                "map.pgm\n",
-                request.truth.c_str(), static_cast<unsigned long long>(result.litter),
-                static_cast<unsigned long long>(result.natural),
-                static_cast<unsigned long long>(result.objects),
-                static_cast<unsigned long long>(result.masks));
+    WriteTruthMap(sim::Simulation(RunSpec(spec, options), {options.max_duration_s}), request.truth);
+    std::printf(
+        "wrote %s: %llu litter, %llu natural look-alikes, %llu primitives, %llu masks, "
+        "map.pgm\n",
+        request.truth.c_str(), static_cast<unsigned long long>(result.litter),
+        static_cast<unsigned long long>(result.natural),
+        static_cast<unsigned long long>(result.objects),
+        static_cast<unsigned long long>(result.masks));
   }
   if (!request.contact_sheet.empty()) {
     const ContactSheetResult sheet = WriteContactSheet(request.bag, request.contact_sheet);

@@ -1,22 +1,12 @@
 #include "cli/truth_map.hpp"
 
-#include <cmath>
-
+#include "core/pose3.hpp"
 #include "reconstruct/occupancy_grid.hpp"
 #include "reconstruct/scan_points.hpp"
 
 namespace littermap::cli {
-namespace {
-
-PlanarPose Planar(const Eigen::Isometry3d& T) {
-  const Eigen::Vector3d x_axis = T.linear().col(0);
-  return {T.translation().x(), T.translation().y(), std::atan2(x_axis.y(), x_axis.x())};
-}
-
-}  // namespace
-
 void WriteTruthMap(const sim::Simulation& simulation, const std::filesystem::path& truth_dir) {
-  const PlanarPose T_base_laser = Planar(simulation.T_base_laser());
+  const PlanarPose T_base_laser = ToPlanar(simulation.T_base_laser());
   reconstruct::ScanPointsOptions points;
   points.laser_height_m = simulation.T_base_laser().translation().z();
   reconstruct::OccupancyGrid grid({});
@@ -25,7 +15,7 @@ void WriteTruthMap(const sim::Simulation& simulation, const std::filesystem::pat
   for (std::size_t k = 0; k < simulation.scan_count(); ++k) {
     const double t_s = simulation.ScanTime(k);
     RollPitchYaw rpy;
-    const PlanarPose T_world_base = Planar(simulation.TrueBasePose(t_s, &rpy));
+    const PlanarPose T_world_base = ToPlanar(simulation.TrueBasePose(t_s, &rpy));
     const reconstruct::ScanPoints scan = reconstruct::ScanToPoints(
         simulation.Scan(k), T_base_laser, points, reconstruct::Tilt{rpy.roll_rad, rpy.pitch_rad});
     reconstruct::Points2 hits;

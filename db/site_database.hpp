@@ -41,7 +41,7 @@ struct RunRecord {
   double start_time_s = 0.0;
   double end_time_s = 0.0;
   double length_m = 0.0;
-  PlanarPose T_site_run;                      // the run's map frame in the site frame
+  PlanarPose T_site_run;                       // the run's map frame in the site frame
   std::optional<double> registration_quality;  // matching ratio; none: not matched (first run,
                                                // manual transform, or no map)
 };

@@ -52,9 +52,13 @@ void DrawOccupancy(cv::Mat& map, const GridGeometry& grid, double scale,
   const double pixel_m = grid.cell_size_m / scale;
   const int samples =
       std::clamp(static_cast<int>(std::ceil(pixel_m / options.occupancy_cell_size_m)), 1, 8);
-  const cv::Vec3b unsurveyed(static_cast<std::uint8_t>(kUnsurveyed[0]),
-                             static_cast<std::uint8_t>(kUnsurveyed[1]),
-                             static_cast<std::uint8_t>(kUnsurveyed[2]));
+  const auto pixel_of = [](const cv::Scalar& colour) {
+    return cv::Vec3b(static_cast<std::uint8_t>(colour[0]), static_cast<std::uint8_t>(colour[1]),
+                     static_cast<std::uint8_t>(colour[2]));
+  };
+  const cv::Vec3b unsurveyed = pixel_of(kUnsurveyed);
+  const cv::Vec3b ink = pixel_of(kMapInk);
+  const cv::Vec3b mapped_unsurveyed = pixel_of(kMappedUnsurveyed);
   for (int r = 0; r < map.rows; ++r) {
     for (int c = 0; c < map.cols; ++c) {
       int darkest = 256;
@@ -69,9 +73,9 @@ void DrawOccupancy(cv::Mat& map, const GridGeometry& grid, double scale,
       if (darkest < 100) {
         // Dark ink, or white ink where the density's colour is dark itself.
         const int luminance = (pixel[0] + 6 * pixel[1] + 3 * pixel[2]) / 10;
-        pixel = luminance < 110 ? cv::Vec3b(255, 255, 255) : cv::Vec3b(45, 45, 45);
+        pixel = luminance < 110 ? cv::Vec3b(255, 255, 255) : ink;
       } else if (darkest > 250 && darkest <= 255 && pixel == unsurveyed) {
-        pixel = cv::Vec3b(238, 238, 238);
+        pixel = mapped_unsurveyed;
       }
     }
   }
@@ -104,8 +108,8 @@ void DrawLegend(cv::Mat& canvas, int x0, int map_height, float peak, const std::
   if (!with_map) return;
   cv::rectangle(canvas, {x0 + 10, key_y + 22}, {x0 + 30, key_y + 36}, kMappedUnsurveyed,
                 cv::FILLED);
-  cv::putText(canvas, "mapped, not surveyed", {x0 + 36, key_y + 34}, cv::FONT_HERSHEY_SIMPLEX,
-              0.4, kInk, 1, cv::LINE_AA);
+  cv::putText(canvas, "mapped, not surveyed", {x0 + 36, key_y + 34}, cv::FONT_HERSHEY_SIMPLEX, 0.4,
+              kInk, 1, cv::LINE_AA);
   cv::rectangle(canvas, {x0 + 10, key_y + 44}, {x0 + 30, key_y + 58}, kMapInk, cv::FILLED);
   cv::putText(canvas, "trees, walls (map)", {x0 + 36, key_y + 56}, cv::FONT_HERSHEY_SIMPLEX, 0.4,
               kInk, 1, cv::LINE_AA);

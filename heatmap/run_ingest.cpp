@@ -158,9 +158,8 @@ IngestResult IngestRun(db::SiteDatabase& site, const RunInput& run, const Ingest
       result.run_id = *existing;
       return;
     }
-    result.run_id = site.AddRun({0, run.name, run.source_digest, run.start_time_s,
-                                 run.end_time_s, result.length_m, run.T_site_run,
-                                 run.registration_quality});
+    result.run_id = site.AddRun({0, run.name, run.source_digest, run.start_time_s, run.end_time_s,
+                                 result.length_m, run.T_site_run, run.registration_quality});
     if (run.site_map && site.SiteMap()) {
       throw SiteMapDefinedMeanwhile(site.sql().file().string() +
                                     ": another run defined the site map meanwhile");

@@ -129,8 +129,7 @@ LoopAttempt LoopCloser::TryCandidate(const KeyFrameMap& map, std::size_t current
       }
     }
     if (best_sparse.converged) {
-      const IcpResult refined =
-          MatchIcp(source, target, best_sparse.T_target_source, options_.icp);
+      const IcpResult refined = MatchIcp(source, target, best_sparse.T_target_source, options_.icp);
       if (Better(refined, match)) match = refined;
     }
   }
@@ -164,8 +163,8 @@ LoopAttempt LoopCloser::TryWide(const KeyFrameMap& map, std::size_t current,
   if (reachable.empty()) return {};
   MapPoints submap = map.WorldPoints(reachable);
   const Points2 source = SourcePoints(map, current);
-  const CorrelativeResult coarse = MatchCorrelative(
-      source, submap.points, now.T_world_base, window_m, window_rad, options_.correlative);
+  const CorrelativeResult coarse = MatchCorrelative(source, submap.points, now.T_world_base,
+                                                    window_m, window_rad, options_.correlative);
   LoopAttempt attempt;
   attempt.candidate = reachable.front();
   if (!coarse.found || coarse.score < options_.min_correlative_score) {

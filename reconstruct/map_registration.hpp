@@ -16,8 +16,8 @@
 namespace littermap::reconstruct {
 
 struct MapRegistrationOptions {
-  double window_m = 3;        // search half-width around the initial guess
-  double window_rad = 0.26;   // 15 degrees
+  double window_m = 3;         // search half-width around the initial guess
+  double window_rad = 0.26;    // 15 degrees
   double point_voxel_m = 0.1;  // both maps' points thinned to this spacing
   // Accepted when at least this share of the run's points lies within inlier_distance_m of the
   // site's after ICP.
@@ -34,18 +34,18 @@ struct MapRegistrationOptions {
 struct MapRegistrationResult {
   bool registered = false;
   PlanarPose T_site_run;
-  double matching_ratio = 0;     // share of the overlapping run points on the site's, [0, 1]
+  double matching_ratio = 0;       // share of the overlapping run points on the site's, [0, 1]
   std::size_t overlap_points = 0;  // run points where the site map knows the ground
-  double correlative_score = 0;  // of the coarse match, in [0, 1]
+  double correlative_score = 0;    // of the coarse match, in [0, 1]
   std::size_t run_points = 0;
   std::size_t site_points = 0;
 };
 
 // site_known: whether the site map knows the ground at a point of the site frame; unset: it
 // knows it everywhere.
-MapRegistrationResult RegisterMap(const Points2& site_points, const Points2& run_points,
-                                  const PlanarPose& initial_T_site_run,
-                                  const MapRegistrationOptions& options,
-                                  const std::function<bool(const Eigen::Vector2d&)>& site_known = {});
+MapRegistrationResult RegisterMap(
+    const Points2& site_points, const Points2& run_points, const PlanarPose& initial_T_site_run,
+    const MapRegistrationOptions& options,
+    const std::function<bool(const Eigen::Vector2d&)>& site_known = {});
 
 }  // namespace littermap::reconstruct

@@ -10,13 +10,14 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/error.hpp"
+#include "core/map_server_grey.hpp"
 
 namespace littermap::reconstruct {
 namespace {
 
-constexpr std::uint8_t kOccupied = 0;
-constexpr std::uint8_t kFree = 254;
-constexpr std::uint8_t kUnknown = 205;
+using map_grey::kFree;
+using map_grey::kOccupied;
+using map_grey::kUnknown;
 constexpr std::int64_t kGrowMarginCells = 64;
 
 }  // namespace

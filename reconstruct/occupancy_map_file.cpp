@@ -66,7 +66,8 @@ OccupancyMapImage ReadOccupancyMap(const std::filesystem::path& yaml_path) {
     map.origin_x_m = origin[0].as<double>();
     map.origin_y_m = origin[1].as<double>();
     if (origin[2].as<double>() != 0) {
-      throw BadInputError(yaml_path.string() + ": 'origin' yaw must be 0 (rotated maps are not read)");
+      throw BadInputError(yaml_path.string() +
+                          ": 'origin' yaw must be 0 (rotated maps are not read)");
     }
     if (yaml["occupied_thresh"]) map.occupied_threshold = yaml["occupied_thresh"].as<double>();
     if (yaml["negate"] && yaml["negate"].as<int>() != 0) {
@@ -76,11 +77,13 @@ OccupancyMapImage ReadOccupancyMap(const std::filesystem::path& yaml_path) {
   } catch (const YAML::Exception& e) {
     throw BadInputError(yaml_path.string() + ": " + e.what());
   }
-  if (!(map.resolution_m > 0)) throw BadInputError(yaml_path.string() + ": 'resolution' must be > 0");
+  if (!(map.resolution_m > 0))
+    throw BadInputError(yaml_path.string() + ": 'resolution' must be > 0");
   if (image.is_relative()) image = yaml_path.parent_path() / image;
   std::ifstream pgm(image, std::ios::binary);
-  if (!pgm) throw BadInputError(image.string() + ": cannot open the map image named by " +
-                                yaml_path.string());
+  if (!pgm)
+    throw BadInputError(image.string() + ": cannot open the map image named by " +
+                        yaml_path.string());
   if (HeaderToken(pgm) != "P5") throw BadInputError(image.string() + ": not a binary PGM (P5)");
   map.width = HeaderNumber(pgm, image, "width");
   map.height = HeaderNumber(pgm, image, "height");

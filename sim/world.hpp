@@ -42,7 +42,7 @@ struct World {
   WorldSpec spec;
   Terrain terrain;
   std::vector<WorldObject> objects;
-  std::vector<Eigen::Vector2d> route_m;       // the planned route the robot drives
+  std::vector<Eigen::Vector2d> route_m;  // the planned route the robot drives
   // Every route of the spec, planned: the structure keeps clear of all of them, so the world is
   // the same whichever one is driven.
   std::vector<std::vector<Eigen::Vector2d>> corridors_m;

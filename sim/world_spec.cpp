@@ -224,8 +224,8 @@ const RouteSpec& WorldSpec::DrivenRoute() const {
     if (route_name == driven_route) return named_route;
     known += ", " + route_name;
   }
-  throw BadInputError(source.string() + ": no route named '" + driven_route + "' (routes: " +
-                      known + ")");
+  throw BadInputError(source.string() + ": no route named '" + driven_route +
+                      "' (routes: " + known + ")");
 }
 
 WorldSpec LoadWorldSpec(const std::filesystem::path& path) {
