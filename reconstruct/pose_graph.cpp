@@ -114,6 +114,12 @@ PoseGraphResult OptimizePoseGraph(std::vector<PlanarPose>* poses,
   return result;
 }
 
+Eigen::Matrix3d DiagonalInformation(double sigma_m, double sigma_rad) {
+  return Eigen::Vector3d(1 / (sigma_m * sigma_m), 1 / (sigma_m * sigma_m),
+                         1 / (sigma_rad * sigma_rad))
+      .asDiagonal();
+}
+
 Eigen::Matrix3d EdgeInformation(const Eigen::Matrix3d& information_world, double theta_from_rad,
                                 double sigma_floor_m, double sigma_floor_rad) {
   // e_world = G e_local with G = diag(R(theta_from), 1), so Sigma_local = G^T Sigma_world G.

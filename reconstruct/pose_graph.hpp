@@ -41,6 +41,9 @@ PoseGraphResult OptimizePoseGraph(std::vector<PlanarPose>* poses,
                                   const std::vector<PoseGraphEdge>& edges,
                                   const PoseGraphOptions& options);
 
+// Information of independent errors with these standard deviations in x and y and in theta.
+Eigen::Matrix3d DiagonalInformation(double sigma_m, double sigma_rad);
+
 // The information of an edge from a into b, given the information of b's pose in the world
 // frame as a matcher estimated it (order x, y, theta): rotated into a's frame, where the edge's
 // translation residual lives, and with a floor added to the covariance. The floor stands for

@@ -10,12 +10,6 @@
 namespace littermap::reconstruct {
 namespace {
 
-Eigen::Matrix3d DiagonalInformation(double sigma_m, double sigma_rad) {
-  return Eigen::Vector3d(1 / (sigma_m * sigma_m), 1 / (sigma_m * sigma_m),
-                         1 / (sigma_rad * sigma_rad))
-      .asDiagonal();
-}
-
 bool LoopFits(const PoseGraphEdge& edge, const std::vector<PlanarPose>& poses,
               const SlamOptions& options) {
   const PlanarPose residual = Between(edge.T_from_to, Between(poses[edge.from], poses[edge.to]));

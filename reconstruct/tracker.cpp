@@ -5,6 +5,7 @@
 #include <Eigen/Cholesky>
 
 #include "core/error.hpp"
+#include "reconstruct/pose_graph.hpp"
 
 namespace littermap::reconstruct {
 namespace {
@@ -120,9 +121,7 @@ Eigen::Matrix3d Tracker::PredictionInformation(const PlanarPose& from, const Pla
   const double sigma_rad =
       factor * (options_.odometry_sigma_rad + options_.odometry_sigma_rad_per_m * distance_m +
                 options_.odometry_sigma_rad_per_rad * std::abs(motion.theta_rad));
-  return Eigen::Vector3d(1 / (sigma_m * sigma_m), 1 / (sigma_m * sigma_m),
-                         1 / (sigma_rad * sigma_rad))
-      .asDiagonal();
+  return DiagonalInformation(sigma_m, sigma_rad);
 }
 
 TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
