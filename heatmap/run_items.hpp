@@ -1,7 +1,8 @@
 #pragma once
 // The litter items of one run: RUN_DIR/items.csv from the detect stage
-// (id,class,x,y,z,size_m,confidence; metres in the run's map frame), or the simulator's truth
-// litter.csv (id,class,x,y,z,size_m), which stands in for it with confidence 1.
+// (id,class,x,y,z,size_m,confidence,litter,...; metres in the run's map frame; rows with
+// litter = 0 are natural objects and are skipped), or the simulator's truth litter.csv
+// (id,class,x,y,z,size_m), which stands in for it with confidence 1.
 
 #include <filesystem>
 #include <string>
@@ -20,7 +21,7 @@ struct RunItem {
   double confidence = 1.0;
 };
 
-// Columns are found by their header names (order free); confidence is optional. Throws
+// Columns are found by their header names (order free); confidence and litter are optional. Throws
 // BadInputError "FILE:LINE: ..." naming the column for a missing column or a bad number.
 std::vector<RunItem> ReadRunItems(const std::filesystem::path& file);
 
