@@ -1,0 +1,309 @@
+#include "eval/detection_metrics.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "core/csv_table.hpp"
+#include "core/error.hpp"
+
+namespace littermap::eval {
+namespace {
+
+constexpr std::size_t kUnmatched = std::numeric_limits<std::size_t>::max();
+
+[[noreturn]] void Fail(const CsvRow& row, const std::string& column, const std::string& what) {
+  throw BadInputError(row.where() + ": column '" + column + "' " + what);
+}
+
+const std::string& NonEmpty(const CsvRow& row, const std::string& column) {
+  const std::string& text = row.Text(column);
+  if (text.empty()) Fail(row, column, "is empty");
+  return text;
+}
+
+std::size_t Count(const CsvRow& row, const std::string& column) {
+  const std::string& text = row.Text(column);
+  std::size_t value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size()) {
+    Fail(row, column, "is not a non-negative integer: '" + text + "'");
+  }
+  return value;
+}
+
+double Ratio(std::size_t numerator, std::size_t denominator) {
+  return denominator == 0 ? 1.0 : static_cast<double>(numerator) / static_cast<double>(denominator);
+}
+
+// For each item the index into `objects` it matched, or kUnmatched.
+std::vector<std::size_t> Match(const std::vector<const DetectedItem*>& items,
+                               const std::vector<const TruthObject*>& objects, double radius_m) {
+  std::vector<Eigen::Vector2d> a, b;
+  for (const DetectedItem* item : items) a.push_back(item->position_m);
+  for (const TruthObject* object : objects) b.push_back(object->position_m);
+  std::vector<std::size_t> matched(items.size(), kUnmatched);
+  for (const auto& [i, j] : MatchByDistance(a, b, radius_m)) matched[i] = j;
+  return matched;
+}
+
+// The items no object matched, and how many of them match one of `fallback` (hidden objects).
+std::pair<std::vector<const DetectedItem*>, std::size_t> SplitUnmatched(
+    const std::vector<const DetectedItem*>& items, const std::vector<std::size_t>& matched,
+    const std::vector<const TruthObject*>& fallback, double radius_m) {
+  std::vector<const DetectedItem*> unmatched;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (matched[i] == kUnmatched) unmatched.push_back(items[i]);
+  }
+  const auto on_fallback = Match(unmatched, fallback, radius_m);
+  std::vector<const DetectedItem*> rest;
+  for (std::size_t i = 0; i < unmatched.size(); ++i) {
+    if (on_fallback[i] == kUnmatched) rest.push_back(unmatched[i]);
+  }
+  return {rest, unmatched.size() - rest.size()};
+}
+
+std::vector<ClassMetrics> CountPerClass(const std::vector<const DetectedItem*>& scored,
+                                        const std::vector<const TruthObject*>& truth,
+                                        const std::vector<const DetectedItem*>& predicted,
+                                        const std::vector<std::size_t>& matched) {
+  std::set<std::string> extra;
+  for (const TruthObject* object : truth) extra.insert(object->class_name);
+  for (const DetectedItem* item : predicted) extra.insert(item->class_name);
+  for (const std::string& name : LitterClasses()) extra.erase(name);
+  extra.erase("natural");
+  extra.erase("none");
+  std::vector<ClassMetrics> classes;
+  for (const auto& name : LitterClasses()) classes.push_back({name});
+  for (const auto& name : extra) classes.push_back({name});
+  for (ClassMetrics& c : classes) {
+    for (const TruthObject* object : truth) c.truth += object->class_name == c.class_name;
+    for (const DetectedItem* item : scored) c.detected += item->class_name == c.class_name;
+    for (std::size_t i = 0; i < predicted.size(); ++i) {
+      c.true_positives += matched[i] != kUnmatched && predicted[i]->class_name == c.class_name &&
+                          truth[matched[i]]->class_name == c.class_name;
+    }
+    c.precision = Ratio(c.true_positives, c.detected);
+    c.recall = Ratio(c.true_positives, c.truth);
+  }
+  return classes;
+}
+
+// Litter scores: predicted litter against visible truth litter.
+void ScoreLitter(const std::vector<DetectedItem>& detected,
+                 const std::vector<const TruthObject*>& shown,
+                 const std::vector<const TruthObject*>& hidden, double radius_m,
+                 DetectionMetrics& metrics) {
+  std::vector<const DetectedItem*> predicted;
+  for (const DetectedItem& item : detected) {
+    if (item.litter) predicted.push_back(&item);
+  }
+  std::vector<const TruthObject*> truth, hidden_litter;
+  for (const TruthObject* object : shown) {
+    if (object->litter) truth.push_back(object);
+  }
+  for (const TruthObject* object : hidden) {
+    if (object->litter) hidden_litter.push_back(object);
+  }
+  const auto matched = Match(predicted, truth, radius_m);
+  const auto [false_positives, ignored] =
+      SplitUnmatched(predicted, matched, hidden_litter, radius_m);
+  std::vector<const DetectedItem*> scored;
+  std::size_t class_correct = 0;
+  for (std::size_t i = 0; i < predicted.size(); ++i) {
+    if (matched[i] == kUnmatched) continue;
+    scored.push_back(predicted[i]);
+    class_correct += predicted[i]->class_name == truth[matched[i]]->class_name;
+  }
+  metrics.true_positives = scored.size();
+  scored.insert(scored.end(), false_positives.begin(), false_positives.end());
+  metrics.truth_litter = truth.size();
+  metrics.detected_litter = scored.size();
+  metrics.false_positives = false_positives.size();
+  metrics.false_negatives = truth.size() - metrics.true_positives;
+  metrics.ignored_detections = ignored;
+  metrics.precision = Ratio(metrics.true_positives, metrics.detected_litter);
+  metrics.recall = Ratio(metrics.true_positives, metrics.truth_litter);
+  const double sum = metrics.precision + metrics.recall;
+  metrics.f1 = sum > 0 ? 2 * metrics.precision * metrics.recall / sum : 0.0;
+  metrics.class_accuracy = Ratio(class_correct, metrics.true_positives);
+  metrics.per_class = CountPerClass(scored, truth, predicted, matched);
+}
+
+// Confusion and litter/natural accuracy: every detected item against every visible object.
+void Confuse(const std::vector<DetectedItem>& detected,
+             const std::vector<const TruthObject*>& shown,
+             const std::vector<const TruthObject*>& hidden, double radius_m,
+             DetectionMetrics& metrics) {
+  for (const ClassMetrics& c : metrics.per_class) metrics.confusion_labels.push_back(c.class_name);
+  metrics.confusion_labels.push_back("natural");
+  metrics.confusion_labels.push_back("none");
+  const std::size_t none = metrics.confusion_labels.size() - 1, natural = none - 1;
+  std::map<std::string, std::size_t> index;
+  for (std::size_t i = 0; i < natural; ++i) index[metrics.confusion_labels[i]] = i;
+  const auto label = [&](bool litter, const std::string& class_name) {
+    const auto it = index.find(class_name);  // not found: a litter item called "natural"
+    return litter && it != index.end() ? it->second : natural;
+  };
+  metrics.confusion.assign(none + 1, std::vector<std::size_t>(none + 1, 0));
+
+  std::vector<const DetectedItem*> items;
+  for (const DetectedItem& item : detected) items.push_back(&item);
+  const auto matched = Match(items, shown, radius_m);
+  std::vector<bool> object_matched(shown.size(), false);
+  std::size_t agree = 0;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (matched[i] == kUnmatched) continue;
+    const TruthObject& object = *shown[matched[i]];
+    object_matched[matched[i]] = true;
+    ++metrics.confusion[label(object.litter, object.class_name)]
+                       [label(items[i]->litter, items[i]->class_name)];
+    ++metrics.litter_natural_pairs;
+    agree += items[i]->litter == object.litter;
+  }
+  metrics.litter_natural_accuracy = Ratio(agree, metrics.litter_natural_pairs);
+  for (const DetectedItem* item : SplitUnmatched(items, matched, hidden, radius_m).first) {
+    ++metrics.confusion[none][label(item->litter, item->class_name)];
+  }
+  for (std::size_t j = 0; j < shown.size(); ++j) {
+    if (!object_matched[j])
+      ++metrics.confusion[label(shown[j]->litter, shown[j]->class_name)][none];
+  }
+}
+
+}  // namespace
+
+const std::vector<std::string>& LitterClasses() {
+  static const std::vector<std::string> classes = {
+      "can", "bottle", "cup", "carton", "food_container", "plastic_bag", "other"};
+  return classes;
+}
+
+const std::vector<std::string>& NaturalClasses() {
+  static const std::vector<std::string> classes = {"flower_red",    "flower_yellow", "flower_white",
+                                                   "flower_purple", "leaf",          "stone",
+                                                   "pine_cone",     "branch",        "mushroom"};
+  return classes;
+}
+
+bool IsNaturalClass(std::string_view class_name) {
+  const auto& natural = NaturalClasses();
+  return class_name == "natural" ||
+         std::find(natural.begin(), natural.end(), class_name) != natural.end();
+}
+
+void DetectionMetricsOptions::Validate() const {
+  if (!(match_radius_m > 0) || !std::isfinite(match_radius_m)) {
+    throw UsageError("match_radius_m must be > 0, got " + std::to_string(match_radius_m));
+  }
+}
+
+std::size_t DetectionMetrics::Confusion(std::string_view truth_label,
+                                        std::string_view predicted_label) const {
+  const auto row = std::find(confusion_labels.begin(), confusion_labels.end(), truth_label);
+  const auto column = std::find(confusion_labels.begin(), confusion_labels.end(), predicted_label);
+  if (row == confusion_labels.end() || column == confusion_labels.end()) return 0;
+  return confusion[static_cast<std::size_t>(row - confusion_labels.begin())]
+                  [static_cast<std::size_t>(column - confusion_labels.begin())];
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> MatchByDistance(
+    const std::vector<Eigen::Vector2d>& a, const std::vector<Eigen::Vector2d>& b, double radius_m) {
+  // Candidates found by binary search on b sorted by x, then taken greedily by distance.
+  std::vector<std::size_t> b_order(b.size());
+  for (std::size_t j = 0; j < b.size(); ++j) b_order[j] = j;
+  std::stable_sort(b_order.begin(), b_order.end(),
+                   [&](std::size_t p, std::size_t q) { return b[p].x() < b[q].x(); });
+  std::vector<std::tuple<double, std::size_t, std::size_t>> candidates;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    auto it = std::lower_bound(b_order.begin(), b_order.end(), a[i].x() - radius_m,
+                               [&](std::size_t j, double x) { return b[j].x() < x; });
+    for (; it != b_order.end() && b[*it].x() <= a[i].x() + radius_m; ++it) {
+      const double distance = (a[i] - b[*it]).norm();
+      if (distance <= radius_m) candidates.emplace_back(distance, i, *it);
+    }
+  }
+  std::sort(candidates.begin(), candidates.end());
+  std::vector<bool> a_used(a.size(), false), b_used(b.size(), false);
+  std::vector<std::pair<std::size_t, std::size_t>> matches;
+  for (const auto& [distance, i, j] : candidates) {
+    if (a_used[i] || b_used[j]) continue;
+    a_used[i] = b_used[j] = true;
+    matches.emplace_back(i, j);
+  }
+  std::sort(matches.begin(), matches.end());
+  return matches;
+}
+
+DetectionMetrics EvaluateDetections(const std::vector<DetectedItem>& detected,
+                                    const std::vector<TruthObject>& truth,
+                                    const DetectionMetricsOptions& options,
+                                    const std::optional<VisiblePixels>& visible_pixels) {
+  options.Validate();
+  std::vector<const TruthObject*> shown, hidden;
+  for (const TruthObject& object : truth) {
+    std::size_t pixels = options.min_visible_pixels;
+    if (visible_pixels) {
+      const auto it = visible_pixels->find(object.id);
+      pixels = it == visible_pixels->end() ? 0 : it->second;
+    }
+    (pixels >= options.min_visible_pixels ? shown : hidden).push_back(&object);
+  }
+  DetectionMetrics metrics;
+  metrics.hidden_truth = hidden.size();
+  ScoreLitter(detected, shown, hidden, options.match_radius_m, metrics);
+  Confuse(detected, shown, hidden, options.match_radius_m, metrics);
+  return metrics;
+}
+
+std::vector<DetectedItem> ReadDetectedItems(const std::filesystem::path& file) {
+  std::vector<DetectedItem> items;
+  ReadCsv(file, {"id", "class", "x", "y"}, [&](const CsvRow& row) {
+    DetectedItem item;
+    item.id = NonEmpty(row, "id");
+    item.class_name = NonEmpty(row, "class");
+    item.position_m = {row.Number("x"), row.Number("y")};
+    if (row.Has("confidence")) {
+      item.confidence = row.Number("confidence");
+      if (item.confidence < 0 || item.confidence > 1) {
+        Fail(row, "confidence", "is not in [0, 1]: '" + row.Text("confidence") + "'");
+      }
+    }
+    if (row.Has("litter")) {
+      const std::string& flag = row.Text("litter");
+      if (flag != "0" && flag != "1") Fail(row, "litter", "is not 0 or 1: '" + flag + "'");
+      item.litter = flag == "1";
+    } else {
+      item.litter = !IsNaturalClass(item.class_name);
+    }
+    items.push_back(std::move(item));
+  });
+  return items;
+}
+
+std::vector<TruthObject> ReadTruthObjects(const std::filesystem::path& file, bool litter) {
+  std::vector<TruthObject> objects;
+  ReadCsv(file, {"id", "class", "x", "y"}, [&](const CsvRow& row) {
+    objects.push_back(
+        {NonEmpty(row, "id"), NonEmpty(row, "class"), {row.Number("x"), row.Number("y")}, litter});
+  });
+  return objects;
+}
+
+VisiblePixels ReadVisiblePixels(const std::filesystem::path& file) {
+  VisiblePixels visible;
+  ReadCsv(file, {"object_id", "pixels"}, [&](const CsvRow& row) {
+    const std::size_t pixels = Count(row, "pixels");
+    std::size_t& largest = visible[NonEmpty(row, "object_id")];
+    largest = std::max(largest, pixels);
+  });
+  return visible;
+}
+
+}  // namespace littermap::eval

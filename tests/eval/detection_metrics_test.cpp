@@ -1,0 +1,304 @@
+// Detection metrics against small scenes with known answers: matching radius and one-to-one
+// matching, class confusion, natural look-alikes taken for litter, the visibility filter, and
+// the CSV readers' error messages. Counts are exact; ratios are exact fractions, compared with a
+// 1e-12 tolerance (a few floating-point divisions).
+
+#include "eval/detection_metrics.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/error.hpp"
+#include "support/temp_dir.hpp"
+
+namespace littermap::eval {
+namespace {
+
+constexpr double kTolerance = 1e-12;
+
+DetectedItem Item(const std::string& class_name, double x, double y, bool litter = true) {
+  static int next_id = 0;
+  return {"d" + std::to_string(next_id++), class_name, {x, y}, 1.0, litter};
+}
+
+TruthObject Litter(const std::string& id, const std::string& class_name, double x, double y) {
+  return {id, class_name, {x, y}, true};
+}
+
+TruthObject Natural(const std::string& id, const std::string& class_name, double x, double y) {
+  return {id, class_name, {x, y}, false};
+}
+
+const ClassMetrics& ClassRow(const DetectionMetrics& metrics, const std::string& name) {
+  for (const ClassMetrics& c : metrics.per_class) {
+    if (c.class_name == name) return c;
+  }
+  throw std::runtime_error("no per-class row " + name);
+}
+
+void WriteFile(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path) << text;
+}
+
+TEST(DetectionMetrics, PerfectDetectionScoresOne) {
+  const std::vector<TruthObject> truth = {Litter("1", "can", 0, 0), Litter("2", "bottle", 4, 1),
+                                          Litter("3", "plastic_bag", -2, 7)};
+  const std::vector<DetectedItem> detected = {Item("plastic_bag", -2, 7), Item("can", 0, 0),
+                                              Item("bottle", 4, 1)};
+  const DetectionMetrics metrics = EvaluateDetections(detected, truth, {});
+  EXPECT_EQ(metrics.true_positives, 3u);
+  EXPECT_EQ(metrics.false_positives, 0u);
+  EXPECT_EQ(metrics.false_negatives, 0u);
+  EXPECT_EQ(metrics.truth_litter, 3u);
+  EXPECT_EQ(metrics.detected_litter, 3u);
+  EXPECT_NEAR(metrics.precision, 1.0, kTolerance);
+  EXPECT_NEAR(metrics.recall, 1.0, kTolerance);
+  EXPECT_NEAR(metrics.f1, 1.0, kTolerance);
+  EXPECT_NEAR(metrics.class_accuracy, 1.0, kTolerance);
+  EXPECT_EQ(metrics.litter_natural_pairs, 3u);
+  EXPECT_NEAR(metrics.litter_natural_accuracy, 1.0, kTolerance);
+  ASSERT_EQ(metrics.per_class.size(), LitterClasses().size());
+  EXPECT_EQ(ClassRow(metrics, "can").truth, 1u);
+  EXPECT_EQ(ClassRow(metrics, "can").detected, 1u);
+  EXPECT_EQ(ClassRow(metrics, "can").true_positives, 1u);
+  EXPECT_EQ(ClassRow(metrics, "cup").truth, 0u);
+  EXPECT_EQ(metrics.Confusion("bottle", "bottle"), 1u);
+  EXPECT_EQ(metrics.Confusion("none", "can"), 0u);
+}
+
+TEST(DetectionMetrics, OffsetJustInsideTheRadiusMatchesJustOutsideDoesNot) {
+  const std::vector<TruthObject> truth = {Litter("1", "can", 10, 10)};
+  // 0.29 m and 0.31 m from the truth along a diagonal, radius 0.3 m.
+  const double inside = 0.29 / std::sqrt(2.0), outside = 0.31 / std::sqrt(2.0);
+  const DetectionMetrics matched =
+      EvaluateDetections({Item("can", 10 + inside, 10 + inside)}, truth, {});
+  EXPECT_EQ(matched.true_positives, 1u);
+  EXPECT_EQ(matched.false_positives, 0u);
+  EXPECT_EQ(matched.false_negatives, 0u);
+  const DetectionMetrics missed =
+      EvaluateDetections({Item("can", 10 + outside, 10 - outside)}, truth, {});
+  EXPECT_EQ(missed.true_positives, 0u);
+  EXPECT_EQ(missed.false_positives, 1u);
+  EXPECT_EQ(missed.false_negatives, 1u);
+  EXPECT_NEAR(missed.f1, 0.0, kTolerance);
+  EXPECT_EQ(missed.Confusion("none", "can"), 1u);
+  EXPECT_EQ(missed.Confusion("can", "none"), 1u);
+  // A wider radius takes it in.
+  DetectionMetricsOptions options;
+  options.match_radius_m = 0.5;
+  EXPECT_EQ(
+      EvaluateDetections({Item("can", 10 + outside, 10 - outside)}, truth, options).true_positives,
+      1u);
+}
+
+TEST(DetectionMetrics, MatchingIsOneToOne) {
+  // Two detections of one can: the nearer one is the true positive, the other a false positive.
+  const std::vector<TruthObject> truth = {Litter("1", "can", 0, 0)};
+  const std::vector<DetectedItem> detected = {Item("cup", 0.1, 0), Item("can", 0, 0.05)};
+  const DetectionMetrics metrics = EvaluateDetections(detected, truth, {});
+  EXPECT_EQ(metrics.true_positives, 1u);
+  EXPECT_EQ(metrics.false_positives, 1u);
+  EXPECT_EQ(metrics.false_negatives, 0u);
+  EXPECT_NEAR(metrics.precision, 0.5, kTolerance);
+  EXPECT_NEAR(metrics.recall, 1.0, kTolerance);
+  EXPECT_NEAR(metrics.f1, 2.0 / 3.0, kTolerance);
+  EXPECT_NEAR(metrics.class_accuracy, 1.0, kTolerance);  // the nearer one says "can"
+  EXPECT_EQ(metrics.Confusion("can", "can"), 1u);
+  EXPECT_EQ(metrics.Confusion("none", "cup"), 1u);
+}
+
+TEST(DetectionMetrics, MatchingTakesNearestPairsFirst) {
+  // Greedy by distance, as documented: a1-b0 (0.05 m) is taken first, which leaves a0 (0.2 m
+  // from b0) and b1 (0.2 m from a1) unmatched, where an optimal assignment would pair both.
+  const std::vector<Eigen::Vector2d> a = {{0, 0}, {0.25, 0}};
+  const std::vector<Eigen::Vector2d> b = {{0.2, 0}, {0.45, 0}};
+  const auto matches = MatchByDistance(a, b, 0.21);
+  ASSERT_EQ(matches.size(), 1u);
+  EXPECT_EQ(matches[0], (std::pair<std::size_t, std::size_t>(1, 0)));
+  // Exactly at the radius still matches (inclusive); 1e-9 m further does not.
+  EXPECT_EQ(MatchByDistance({{0, 0}}, {{0, 0.5}}, 0.5).size(), 1u);
+  EXPECT_EQ(MatchByDistance({{0, 0}}, {{0, 0.5 + 1e-9}}, 0.5).size(), 0u);
+}
+
+TEST(DetectionMetrics, WrongClassIsAMatchButNotClassCorrect) {
+  const std::vector<TruthObject> truth = {Litter("1", "can", 0, 0), Litter("2", "bottle", 5, 0)};
+  const std::vector<DetectedItem> detected = {Item("bottle", 0, 0), Item("bottle", 5, 0)};
+  const DetectionMetrics metrics = EvaluateDetections(detected, truth, {});
+  EXPECT_EQ(metrics.true_positives, 2u);
+  EXPECT_NEAR(metrics.precision, 1.0, kTolerance);
+  EXPECT_NEAR(metrics.class_accuracy, 0.5, kTolerance);
+  const ClassMetrics& can = ClassRow(metrics, "can");
+  EXPECT_EQ(can.truth, 1u);
+  EXPECT_EQ(can.detected, 0u);
+  EXPECT_EQ(can.true_positives, 0u);
+  EXPECT_NEAR(can.precision, 1.0, kTolerance);  // nothing predicted "can": no false claim
+  EXPECT_NEAR(can.recall, 0.0, kTolerance);
+  const ClassMetrics& bottle = ClassRow(metrics, "bottle");
+  EXPECT_EQ(bottle.truth, 1u);
+  EXPECT_EQ(bottle.detected, 2u);
+  EXPECT_EQ(bottle.true_positives, 1u);
+  EXPECT_NEAR(bottle.precision, 0.5, kTolerance);
+  EXPECT_NEAR(bottle.recall, 1.0, kTolerance);
+  EXPECT_EQ(metrics.Confusion("can", "bottle"), 1u);
+  EXPECT_EQ(metrics.Confusion("bottle", "bottle"), 1u);
+  EXPECT_EQ(metrics.Confusion("can", "can"), 0u);
+}
+
+TEST(DetectionMetrics, NaturalTakenForLitterIsAFalsePositive) {
+  const std::vector<TruthObject> truth = {Litter("1", "can", 0, 0), Natural("2", "leaf", 3, 0),
+                                          Natural("3", "stone", 6, 0),
+                                          Natural("4", "mushroom", 9, 0)};
+  const std::vector<DetectedItem> detected = {
+      Item("can", 0, 0), Item("cup", 3, 0),  // the leaf taken for a cup
+      Item("stone", 6, 0, false), Item("natural", 9, 0, false)};
+  const DetectionMetrics metrics = EvaluateDetections(detected, truth, {});
+  EXPECT_EQ(metrics.truth_litter, 1u);
+  EXPECT_EQ(metrics.detected_litter, 2u);
+  EXPECT_EQ(metrics.true_positives, 1u);
+  EXPECT_EQ(metrics.false_positives, 1u);
+  EXPECT_NEAR(metrics.precision, 0.5, kTolerance);
+  EXPECT_NEAR(metrics.recall, 1.0, kTolerance);
+  EXPECT_EQ(metrics.litter_natural_pairs, 4u);
+  EXPECT_NEAR(metrics.litter_natural_accuracy, 0.75, kTolerance);
+  EXPECT_EQ(metrics.Confusion("natural", "cup"), 1u);
+  EXPECT_EQ(metrics.Confusion("natural", "natural"), 2u);
+  EXPECT_EQ(metrics.Confusion("can", "can"), 1u);
+  EXPECT_EQ(metrics.Confusion("none", "cup"), 0u);
+}
+
+TEST(DetectionMetrics, VisibilityFilterDropsObjectsTheCameraBarelySaw) {
+  const std::vector<TruthObject> truth = {Litter("1", "can", 0, 0), Litter("2", "can", 5, 0),
+                                          Litter("3", "cup", 10, 0), Natural("4", "leaf", 15, 0)};
+  const VisiblePixels visible = {{"1", 500}, {"2", 20}, {"4", 10}};  // 3 never in a mask
+  const std::vector<DetectedItem> detected = {Item("can", 0, 0), Item("can", 5, 0),
+                                              Item("cup", 15, 0)};  // the hidden leaf as litter
+  const DetectionMetrics unfiltered = EvaluateDetections(detected, truth, {});
+  EXPECT_EQ(unfiltered.truth_litter, 3u);
+  EXPECT_EQ(unfiltered.true_positives, 2u);
+  EXPECT_EQ(unfiltered.false_negatives, 1u);
+  EXPECT_EQ(unfiltered.false_positives, 1u);
+  EXPECT_EQ(unfiltered.hidden_truth, 0u);
+
+  // min 100 pixels: only 1 is truth. The detection at 2 may be right (a frame without a mask
+  // could show it well): ignored. The one at the hidden leaf is not litter anyway: FP.
+  const DetectionMetrics filtered = EvaluateDetections(detected, truth, {}, visible);
+  EXPECT_EQ(filtered.hidden_truth, 3u);
+  EXPECT_EQ(filtered.truth_litter, 1u);
+  EXPECT_EQ(filtered.true_positives, 1u);
+  EXPECT_EQ(filtered.false_negatives, 0u);
+  EXPECT_EQ(filtered.false_positives, 1u);
+  EXPECT_EQ(filtered.ignored_detections, 1u);
+  EXPECT_EQ(filtered.detected_litter, 2u);
+  EXPECT_NEAR(filtered.recall, 1.0, kTolerance);
+  EXPECT_NEAR(filtered.precision, 0.5, kTolerance);
+  EXPECT_EQ(filtered.litter_natural_pairs, 1u);  // only object 1 is visible truth
+  EXPECT_EQ(filtered.Confusion("none", "can"), 0u);
+  EXPECT_EQ(filtered.Confusion("none", "cup"), 0u);
+
+  // The threshold is inclusive: 20 pixels are enough at min 20.
+  DetectionMetricsOptions options;
+  options.min_visible_pixels = 20;
+  const DetectionMetrics at_twenty = EvaluateDetections(detected, truth, options, visible);
+  EXPECT_EQ(at_twenty.truth_litter, 2u);
+  EXPECT_EQ(at_twenty.true_positives, 2u);
+  EXPECT_EQ(at_twenty.ignored_detections, 0u);
+}
+
+TEST(DetectionMetrics, EmptySetsGiveVacuousRatios) {
+  const DetectionMetrics nothing = EvaluateDetections({}, {}, {});
+  EXPECT_NEAR(nothing.precision, 1.0, kTolerance);
+  EXPECT_NEAR(nothing.recall, 1.0, kTolerance);
+  EXPECT_NEAR(nothing.f1, 1.0, kTolerance);
+  EXPECT_NEAR(nothing.class_accuracy, 1.0, kTolerance);
+  const DetectionMetrics blind = EvaluateDetections({}, {Litter("1", "can", 0, 0)}, {});
+  EXPECT_NEAR(blind.precision, 1.0, kTolerance);
+  EXPECT_NEAR(blind.recall, 0.0, kTolerance);
+  EXPECT_NEAR(blind.f1, 0.0, kTolerance);
+  EXPECT_EQ(blind.false_negatives, 1u);
+}
+
+TEST(DetectionMetrics, UnknownLitterClassGetsItsOwnRow) {
+  const DetectionMetrics metrics =
+      EvaluateDetections({Item("tyre", 0, 0)}, {Litter("1", "can", 0, 0)}, {});
+  EXPECT_EQ(metrics.per_class.back().class_name, "tyre");
+  EXPECT_EQ(metrics.per_class.back().detected, 1u);
+  EXPECT_EQ(metrics.Confusion("can", "tyre"), 1u);
+}
+
+TEST(DetectionMetrics, InvalidRadiusIsAUsageError) {
+  DetectionMetricsOptions options;
+  options.match_radius_m = 0;
+  EXPECT_THROW(EvaluateDetections({}, {}, options), UsageError);
+}
+
+TEST(DetectionMetricsFiles, ReadersFindColumnsByName) {
+  testing::TempDir dir;
+  WriteFile(dir / "items.csv",
+            "y,class,extra,id,x,confidence\n1.5,can,?,a,2.5,0.9\n\n# comment\n2,leaf,,b,3,1\n");
+  const auto items = ReadDetectedItems(dir / "items.csv");
+  ASSERT_EQ(items.size(), 2u);
+  EXPECT_EQ(items[0].id, "a");
+  EXPECT_EQ(items[0].class_name, "can");
+  EXPECT_DOUBLE_EQ(items[0].position_m.x(), 2.5);
+  EXPECT_DOUBLE_EQ(items[0].position_m.y(), 1.5);
+  EXPECT_DOUBLE_EQ(items[0].confidence, 0.9);
+  EXPECT_TRUE(items[0].litter);
+  EXPECT_FALSE(items[1].litter);  // no litter column: a leaf is natural
+
+  WriteFile(dir / "flagged.csv", "id,class,x,y,litter\na,leaf,0,0,1\nb,can,0,0,0\n");
+  const auto flagged = ReadDetectedItems(dir / "flagged.csv");
+  ASSERT_EQ(flagged.size(), 2u);
+  EXPECT_TRUE(flagged[0].litter);  // the column wins over the class
+  EXPECT_FALSE(flagged[1].litter);
+
+  WriteFile(dir / "litter.csv", "id,class,x,y,z,size_m\r\n7,can,1.0,2.0,0.05,0.12\r\n");
+  const auto truth = ReadTruthObjects(dir / "litter.csv", true);
+  ASSERT_EQ(truth.size(), 1u);
+  EXPECT_EQ(truth[0].id, "7");
+  EXPECT_EQ(truth[0].class_name, "can");
+  EXPECT_TRUE(truth[0].litter);
+  EXPECT_FALSE(ReadTruthObjects(dir / "litter.csv", false)[0].litter);
+
+  WriteFile(dir / "visible.csv", "frame,object_id,pixels\n0,7,40\n1,7,300\n2,7,12\n2,9,5\n");
+  const VisiblePixels visible = ReadVisiblePixels(dir / "visible.csv");
+  EXPECT_EQ(visible.at("7"), 300u);
+  EXPECT_EQ(visible.at("9"), 5u);
+}
+
+void ExpectBadInput(const std::function<void()>& read, const std::string& expected) {
+  try {
+    read();
+    ADD_FAILURE() << "no error, expected " << expected;
+  } catch (const BadInputError& e) {
+    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+  }
+}
+
+TEST(DetectionMetricsFiles, ErrorsNameFileLineAndColumn) {
+  testing::TempDir dir;
+  const std::string items = (dir / "items.csv").string();
+  WriteFile(items, "id,class,x\n1,can,0\n");
+  ExpectBadInput([&] { ReadDetectedItems(items); }, items + ":1: the header has no column 'y'");
+  WriteFile(items, "id,class,x,y\n1,can,0,0\n2,can,abc,0\n");
+  ExpectBadInput([&] { ReadDetectedItems(items); }, items + ":3: column 'x' is not a number");
+  WriteFile(items, "id,class,x,y\n1,can,0\n");
+  ExpectBadInput([&] { ReadDetectedItems(items); }, items + ":2: column 'y' is missing");
+  WriteFile(items, "id,class,x,y,confidence\n1,can,0,0,1.5\n");
+  ExpectBadInput([&] { ReadDetectedItems(items); }, items + ":2: column 'confidence'");
+  WriteFile(items, "id,class,x,y,litter\n1,can,0,0,yes\n");
+  ExpectBadInput([&] { ReadDetectedItems(items); }, items + ":2: column 'litter'");
+  const std::string visible = (dir / "visible.csv").string();
+  WriteFile(visible, "frame,object_id,pixels\n0,3,-4\n");
+  ExpectBadInput([&] { ReadVisiblePixels(visible); }, visible + ":2: column 'pixels'");
+  const std::string missing = (dir / "missing.csv").string();
+  ExpectBadInput([&] { ReadTruthObjects(missing, true); }, missing);
+}
+
+}  // namespace
+}  // namespace littermap::eval
