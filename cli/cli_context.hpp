@@ -39,5 +39,7 @@ void RegisterEvalCommands(CLI::App& app, CliContext& context);
 void RegisterSiteCommands(CLI::App& app, CliContext& context);
 void RegisterIngestCommand(CLI::App& app, CliContext& context);
 void RegisterHeatmapCommand(CLI::App& app, CliContext& context);
+void RegisterDetectCommand(CLI::App& app, CliContext& context);
+void RegisterTrainCommands(CLI::App& app, CliContext& context);
 
 }  // namespace littermap::cli

@@ -18,8 +18,6 @@ struct PendingCommand {
 
 const std::vector<PendingCommand>& Pending() {
   static const std::vector<PendingCommand> commands = {
-      {"detect", "Detect and classify litter in a run's RGB-D frames (not available yet)"},
-      {"train", "Train the litter classifier from labelled samples (not available yet)"},
       {"report", "HTML report of a site for park staff (not available yet)"},
       {"survey", "reconstruct, detect, ingest, heatmap and report in one go (not available yet)"},
   };

@@ -36,6 +36,8 @@ int main(int argc, char** argv) {
   littermap::cli::RegisterSimulateCommand(app, context);
   littermap::cli::RegisterCaptureCommand(app, context);
   littermap::cli::RegisterReconstructCommand(app, context);
+  littermap::cli::RegisterDetectCommand(app, context);
+  littermap::cli::RegisterTrainCommands(app, context);
   littermap::cli::RegisterEvalCommands(app, context);
   littermap::cli::RegisterSiteCommands(app, context);
   littermap::cli::RegisterIngestCommand(app, context);

@@ -1,6 +1,6 @@
 # Every third-party library littermap uses, found once, as imported targets.
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
-find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs)
+find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs ml)
 find_package(SQLite3 REQUIRED)
 find_package(ZLIB REQUIRED)
 find_package(PNG REQUIRED)
@@ -25,6 +25,21 @@ if(LITTERMAP_BUILD_TESTS)
 endif()
 if(LITTERMAP_BUILD_BENCH)
   find_package(benchmark REQUIRED)
+endif()
+
+# PCL 1.13 (integral-image normals, detect/organized_cloud.cpp). Its CMake config drags in VTK,
+# whose Debian 12 targets fail to configure without MPI; the libraries needed are found
+# directly instead.
+find_path(PCL_INCLUDE_DIR pcl/features/integral_image_normal.h PATH_SUFFIXES pcl-1.13 REQUIRED)
+find_library(PCL_COMMON_LIBRARY NAMES pcl_common REQUIRED)
+find_library(PCL_FEATURES_LIBRARY NAMES pcl_features REQUIRED)
+find_library(PCL_SEARCH_LIBRARY NAMES pcl_search REQUIRED)
+if(NOT TARGET PCL::features)
+  add_library(PCL::features INTERFACE IMPORTED)
+  target_include_directories(PCL::features SYSTEM INTERFACE ${PCL_INCLUDE_DIR})
+  target_link_libraries(PCL::features INTERFACE ${PCL_FEATURES_LIBRARY} ${PCL_SEARCH_LIBRARY}
+                                                ${PCL_COMMON_LIBRARY}
+                                                Eigen3::Eigen)
 endif()
 
 # yaml-cpp 0.7 in Debian 12 exports the plain target name.

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "capture/bag_reader.hpp"
+#include "capture/message_header.hpp"
 #include "capture/message_stream.hpp"
 #include "core/error.hpp"
 
@@ -19,11 +20,6 @@ double Yaw(const msg::Quaternion& q) {
 Tilt TiltOf(const msg::Quaternion& q) {  // roll and pitch of a ZYX (yaw-pitch-roll) rotation
   return {std::atan2(2 * (q.w * q.x + q.y * q.z), 1 - 2 * (q.x * q.x + q.y * q.y)),
           std::asin(std::clamp(2 * (q.w * q.y - q.z * q.x), -1.0, 1.0))};
-}
-
-TimestampNs StampOf(const msg::Header& header) {
-  return static_cast<TimestampNs>(header.stamp.sec) * kNanosecondsPerSecond +
-         static_cast<TimestampNs>(header.stamp.nanosec);
 }
 
 LaserScan ToScan(const msg::LaserScan& message) {

@@ -92,7 +92,7 @@ TEST(Cli, VersionAndHelpExitZero) {
 }
 
 TEST(Cli, StagesNotBuiltYetSaySoAndExitOne) {
-  for (const char* command : {"detect bag --run run", "survey bag --site s.gpkg"}) {
+  for (const char* command : {"report site.gpkg -o out", "survey bag --site s.gpkg"}) {
     const auto result = RunLittermap(command);
     EXPECT_EQ(result.exit_code, 1) << command;
     EXPECT_NE(result.output.find("not available"), std::string::npos) << result.output;

@@ -1,0 +1,66 @@
+#pragma once
+// Ground segmentation of one RGB-D frame, the whole of thesis 3.1 (Alg. 3.1.4.1): organized
+// cloud and normals → connected components → strict ground → texture learning and graph cut →
+// object clusters refined one by one.
+
+#include <vector>
+
+#include <Eigen/Geometry>
+#include <opencv2/core.hpp>
+
+#include "detect/camera_intrinsics.hpp"
+#include "detect/connected_components.hpp"
+#include "detect/ground_surface.hpp"
+#include "detect/object_clusters.hpp"
+#include "detect/organized_cloud.hpp"
+#include "detect/texture_refinement.hpp"
+
+namespace littermap::detect {
+
+struct SegmentationOptions {
+  OrganizedCloudOptions cloud;
+  ComponentOptions components;
+  GroundOptions ground;
+  TextureRefinementOptions texture;
+  ObjectClusterOptions objects;
+  void Validate() const;
+};
+
+struct SegmentationTimings {
+  double cloud_ms = 0, components_ms = 0, ground_ms = 0, texture_ms = 0, objects_ms = 0;
+  double total_ms() const { return cloud_ms + components_ms + ground_ms + texture_ms + objects_ms; }
+};
+
+struct FrameSegmentation {
+  bool ground_found = false;
+  std::size_t ground_points = 0;
+  double ground_rms_m = 0;
+  GroundSurface ground;
+  TextureRefinementResult refinement;  // labels before the cut, non-ground after it
+  std::vector<SegmentedObject> objects;
+  std::size_t components = 0;
+  std::size_t blobs = 0;
+  SegmentationTimings timings;
+};
+
+// Segments the frames of one camera; keeps its buffers from frame to frame.
+class FrameSegmenter {
+ public:
+  explicit FrameSegmenter(const SegmentationOptions& options);
+
+  // colour_bgr CV_8UC3 and depth_mm CV_16UC1 (registered, millimetres) of the intrinsics' size.
+  FrameSegmentation Segment(const cv::Mat& colour_bgr, const cv::Mat& depth_mm,
+                            const CameraIntrinsics& intrinsics,
+                            const Eigen::Isometry3f& T_level_camera);
+
+ private:
+  SegmentationOptions options_;
+  OrganizedCloudBuilder cloud_builder_;
+  OrganizedCloud cloud_;
+};
+
+// A picture of the result for people: ground tinted blue, uncertain pixels yellow, non-ground
+// after the cut red, object outlines green.
+cv::Mat DrawSegmentation(const cv::Mat& colour_bgr, const FrameSegmentation& segmentation);
+
+}  // namespace littermap::detect

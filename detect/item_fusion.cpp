@@ -1,0 +1,78 @@
+#include "detect/item_fusion.hpp"
+
+#include <algorithm>
+
+#include "core/error.hpp"
+
+namespace littermap::detect {
+
+void FusionOptions::Validate() const {
+  if (!(association_radius_m > 0)) throw UsageError("detect: association_radius_m must be > 0");
+  if (min_views < 1) throw UsageError("detect: min_views must be >= 1");
+}
+
+ItemFusion::ItemFusion(FusionOptions options, std::size_t classes)
+    : options_(options), classes_(classes) {
+  options_.Validate();
+}
+
+std::size_t ItemFusion::Add(const Sighting& sighting) {
+  if (sighting.class_probabilities.size() != classes_) {
+    throw InternalError("detect: sighting has " +
+                        std::to_string(sighting.class_probabilities.size()) +
+                        " class probabilities, the classifier " + std::to_string(classes_));
+  }
+  std::size_t best = tracks_.size();
+  double best_distance = options_.association_radius_m;
+  for (std::size_t i = 0; i < tracks_.size(); ++i) {
+    const double distance =
+        (tracks_[i].mean().head<2>() - sighting.position_world_m.head<2>()).norm();
+    if (distance <= best_distance) {
+      best_distance = distance;
+      best = i;
+    }
+  }
+  if (best == tracks_.size()) {
+    Track track;
+    track.probability_sum.assign(classes_, 0.0);
+    track.first_seen_ns = sighting.stamp_ns;
+    tracks_.push_back(std::move(track));
+  }
+  Track& track = tracks_[best];
+  // Inverse-variance weights: depth noise grows with range squared, so its variance with the 4th
+  // power; the position error of a blob centroid grows more gently, so range squared is used.
+  const double weight = 1.0 / std::max(0.25, sighting.range_m * sighting.range_m);
+  track.weighted_sum += weight * sighting.position_world_m;
+  track.weight += weight;
+  track.size_sum += sighting.size_m;
+  for (std::size_t k = 0; k < classes_; ++k)
+    track.probability_sum[k] += sighting.class_probabilities[k];
+  ++track.views;
+  track.first_seen_ns = std::min(track.first_seen_ns, sighting.stamp_ns);
+  track.last_seen_ns = std::max(track.last_seen_ns, sighting.stamp_ns);
+  return best;
+}
+
+std::vector<LitterItem> ItemFusion::Items() const {
+  std::vector<LitterItem> items;
+  for (const Track& track : tracks_) {
+    if (track.views < options_.min_views) continue;
+    LitterItem item;
+    item.id = static_cast<int>(items.size()) + 1;
+    item.position_world_m = track.mean();
+    item.size_m = track.size_sum / track.views;
+    item.views = track.views;
+    item.first_seen_ns = track.first_seen_ns;
+    item.last_seen_ns = track.last_seen_ns;
+    item.class_probabilities = track.probability_sum;
+    for (double& p : item.class_probabilities) p /= track.views;
+    item.best_class = static_cast<std::size_t>(
+        std::max_element(item.class_probabilities.begin(), item.class_probabilities.end()) -
+        item.class_probabilities.begin());
+    item.confidence = item.class_probabilities[item.best_class];
+    items.push_back(std::move(item));
+  }
+  return items;
+}
+
+}  // namespace littermap::detect

@@ -1,0 +1,68 @@
+#pragma once
+// Multi-view fusion: sightings of objects in many frames, placed in the world with the
+// trajectory, become litter items. A sighting joins the nearest item within the association
+// radius (else starts one); an item's position is the range-weighted mean of its sightings
+// (depth noise grows with range), its class distribution the mean of theirs. Items seen in too
+// few frames are dropped: one frame's segmentation error does not become an item.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/time.hpp"
+
+namespace littermap::detect {
+
+struct Sighting {
+  std::size_t frame = 0;
+  TimestampNs stamp_ns = 0;
+  Eigen::Vector3d position_world_m = Eigen::Vector3d::Zero();
+  double size_m = 0;
+  double range_m = 1;
+  std::vector<double> class_probabilities;  // indexed like the classifier's classes
+};
+
+struct LitterItem {
+  int id = 0;
+  Eigen::Vector3d position_world_m = Eigen::Vector3d::Zero();
+  double size_m = 0;
+  std::vector<double> class_probabilities;  // mean over the views
+  int views = 0;
+  TimestampNs first_seen_ns = 0;
+  TimestampNs last_seen_ns = 0;
+  std::size_t best_class = 0;
+  double confidence = 0;  // mean probability of the best class
+};
+
+struct FusionOptions {
+  double association_radius_m = 0.25;
+  int min_views = 3;
+  void Validate() const;
+};
+
+class ItemFusion {
+ public:
+  ItemFusion(FusionOptions options, std::size_t classes);
+  // Returns the index of the item the sighting joined or started.
+  std::size_t Add(const Sighting& sighting);
+  // Items with at least min_views views, numbered from 1 in order of first sighting.
+  std::vector<LitterItem> Items() const;
+  std::size_t candidates() const { return tracks_.size(); }
+
+ private:
+  struct Track {
+    Eigen::Vector3d weighted_sum = Eigen::Vector3d::Zero();
+    double weight = 0;
+    double size_sum = 0;
+    std::vector<double> probability_sum;
+    int views = 0;
+    TimestampNs first_seen_ns = 0, last_seen_ns = 0;
+    Eigen::Vector3d mean() const { return weighted_sum / weight; }
+  };
+  FusionOptions options_;
+  std::size_t classes_;
+  std::vector<Track> tracks_;
+};
+
+}  // namespace littermap::detect

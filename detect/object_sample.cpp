@@ -1,0 +1,79 @@
+#include "detect/object_sample.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/csv_table.hpp"
+#include "core/error.hpp"
+
+namespace littermap::detect {
+
+bool IsLitterClass(const std::string& label) {
+  const auto& litter = LitterClasses();
+  return std::find(litter.begin(), litter.end(), label) != litter.end();
+}
+
+std::vector<ObjectSample> ReadSamples(const std::filesystem::path& directory) {
+  std::vector<ObjectSample> samples;
+  const auto labels = directory / "labels.csv";
+  ReadCsv(labels, {"crop", "mask", "label", "size_m", "width_m", "height_m", "range_m"},
+          [&](const CsvRow& row) {
+            ObjectSample sample;
+            const auto crop = directory / row.Text("crop");
+            const auto mask = directory / row.Text("mask");
+            sample.colour_bgr = cv::imread(crop.string(), cv::IMREAD_COLOR);
+            if (sample.colour_bgr.empty()) {
+              throw BadInputError(row.where() + ": column 'crop': cannot read " + crop.string());
+            }
+            sample.mask = cv::imread(mask.string(), cv::IMREAD_GRAYSCALE);
+            if (sample.mask.size() != sample.colour_bgr.size()) {
+              throw BadInputError(row.where() + ": column 'mask': " + mask.string() +
+                                  " is missing or not the crop's size");
+            }
+            if (cv::countNonZero(sample.mask) == 0) {
+              throw BadInputError(row.where() + ": column 'mask': " + mask.string() +
+                                  " has no object pixel");
+            }
+            sample.label = row.Text("label");
+            if (sample.label.empty())
+              throw BadInputError(row.where() + ": column 'label' is empty");
+            sample.size_m = row.Number("size_m");
+            sample.width_m = row.Number("width_m");
+            sample.height_m = row.Number("height_m");
+            sample.range_m = row.Number("range_m");
+            if (row.Has("source")) sample.source = row.Text("source");
+            samples.push_back(std::move(sample));
+          });
+  return samples;
+}
+
+void WriteSamples(const std::filesystem::path& directory,
+                  const std::vector<ObjectSample>& samples) {
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  std::ofstream labels(directory / "labels.csv");
+  if (error || !labels)
+    throw InternalError(directory.string() + ": cannot create the sample files");
+  labels << "crop,mask,label,size_m,width_m,height_m,range_m,source\n";
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const ObjectSample& s = samples[i];
+    char crop[32], mask[32];
+    std::snprintf(crop, sizeof crop, "crop_%06zu.png", i);
+    std::snprintf(mask, sizeof mask, "mask_%06zu.png", i);
+    if (!cv::imwrite((directory / crop).string(), s.colour_bgr) ||
+        !cv::imwrite((directory / mask).string(), s.mask)) {
+      throw InternalError(directory.string() + ": cannot write " + crop);
+    }
+    char line[256];
+    std::snprintf(line, sizeof line, "%s,%s,%s,%.4f,%.4f,%.4f,%.3f,%s\n", crop, mask,
+                  s.label.c_str(), s.size_m, s.width_m, s.height_m, s.range_m, s.source.c_str());
+    labels << line;
+  }
+  labels.flush();
+  if (!labels) throw InternalError((directory / "labels.csv").string() + ": write failed");
+}
+
+}  // namespace littermap::detect

@@ -1,0 +1,62 @@
+#pragma once
+// The organized point cloud of one depth image with surface normals (thesis 3.1, step 1):
+// points and normals in a gravity-levelled frame (origin at base_link, z up, x forward) so that
+// "ground-like" and "height above the ground" mean the same on every frame, even while the robot
+// is tilted by a root.
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <opencv2/core.hpp>
+
+#include "detect/camera_intrinsics.hpp"
+
+namespace littermap::detect {
+
+struct OrganizedCloudOptions {
+  float min_depth_m = 0.4f;  // nearer readings are sensor artefacts on a Kinect-class camera
+  float max_depth_m = 4.5f;  // litter of a few cm is a handful of pixels beyond
+  // Integral-image normals (PCL, covariance method): neighbourhood size in pixels and the depth
+  // change (relative to depth) that stops smoothing across an edge.
+  float normal_smoothing_px = 10.0f;
+  float max_depth_change_factor = 0.02f;
+  void Validate() const;
+};
+
+struct OrganizedCloud {
+  int width = 0;
+  int height = 0;
+  std::vector<Eigen::Vector3f> points_m;  // level frame; NaN where there is no depth
+  std::vector<Eigen::Vector3f> normals;   // level frame, unit, towards the camera; NaN if unknown
+  std::vector<float> depth_m;             // optical-axis depth, 0 where there is none
+
+  int Index(int u, int v) const { return v * width + u; }
+  bool HasPoint(int i) const { return depth_m[static_cast<std::size_t>(i)] > 0; }
+  bool HasNormal(int i) const { return !std::isnan(normals[static_cast<std::size_t>(i)].x()); }
+};
+
+// Builds the clouds of a sequence of frames. It keeps PCL's integral images and clouds between
+// frames: allocating them anew (tens of MB) cost more than computing the normals.
+class OrganizedCloudBuilder {
+ public:
+  explicit OrganizedCloudBuilder(const OrganizedCloudOptions& options);
+  ~OrganizedCloudBuilder();
+  OrganizedCloudBuilder(const OrganizedCloudBuilder&) = delete;
+  OrganizedCloudBuilder& operator=(const OrganizedCloudBuilder&) = delete;
+
+  // depth_mm: CV_16UC1 registered to colour, 0 = no reading. T_level_camera: the optical frame
+  // in the levelled base frame. Fills *cloud (its buffers are reused). Throws UsageError if the
+  // image size differs from the intrinsics.
+  void Build(const cv::Mat& depth_mm, const CameraIntrinsics& intrinsics,
+             const Eigen::Isometry3f& T_level_camera, OrganizedCloud* cloud);
+
+ private:
+  struct Pcl;
+  OrganizedCloudOptions options_;
+  std::unique_ptr<Pcl> pcl_;
+};
+
+}  // namespace littermap::detect

@@ -1,0 +1,233 @@
+#include "detect/texture_refinement.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <opencv2/imgproc/detail/gcgraph.hpp>
+
+#include "core/error.hpp"
+#include "detect/colour_gmm.hpp"
+#include "detect/colour_table.hpp"
+
+namespace littermap::detect {
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+const double kLogUniform = -3.0 * std::log(256.0);  // uniform density over the BGR cube
+
+cv::Rect GroundRegion(const GroundResult& ground, int width, int height) {
+  int u0 = width, v0 = height, u1 = -1, v1 = -1;
+  for (int v = 0; v < height; ++v) {
+    for (int u = 0; u < width; ++u) {
+      if (!ground.is_ground[static_cast<std::size_t>(v * width + u)]) continue;
+      u0 = std::min(u0, u);
+      u1 = std::max(u1, u);
+      v0 = std::min(v0, v);
+      v1 = std::max(v1, v);
+    }
+  }
+  return u1 < 0 ? cv::Rect() : cv::Rect(u0, v0, u1 - u0 + 1, v1 - v0 + 1);
+}
+
+// Geometry's verdict per pixel (thesis: certain object, certain background, uncertain).
+cv::Mat GeometricLabels(const OrganizedCloud& cloud, const GroundResult& ground,
+                        const cv::Rect& region, const TextureRefinementOptions& options,
+                        std::vector<float>* heights) {
+  cv::Mat labels(cloud.height, cloud.width, CV_8U, cv::Scalar(kOutside));
+  heights->assign(cloud.points_m.size(), kNaN);
+  for (int v = region.y; v < region.br().y; ++v) {
+    auto* row = labels.ptr<std::uint8_t>(v);
+    for (int u = region.x; u < region.br().x; ++u) {
+      const int i = cloud.Index(u, v);
+      const auto index = static_cast<std::size_t>(i);
+      if (!cloud.HasPoint(i)) {
+        row[u] = kUncertain;
+        continue;
+      }
+      const float z = cloud.depth_m[index];
+      const double band =
+          std::max(options.min_ground_band_m, 2.0 * options.depth_noise_per_m2 * z * z);
+      const double h = ground.surface.HeightAbove(cloud.points_m[index]);
+      (*heights)[index] = static_cast<float>(h);
+      if (ground.is_ground[index] && std::abs(h) <= band) {
+        row[u] = kGround;
+      } else if (!ground.is_ground[index] && h > band + options.min_object_height_m) {
+        row[u] = kNonGround;
+      } else {
+        row[u] = kUncertain;
+      }
+    }
+  }
+  return labels;
+}
+
+// The colour model of the pixels labelled `label`. With `uniform_share` > 0 the model is mixed
+// with a uniform density: the non-ground model must also accept litter colours that no certain
+// non-ground pixel of this frame showed.
+ColourTable LearnTable(const cv::Mat& colour_bgr, const cv::Mat& labels, std::uint8_t label,
+                       const TextureRefinementOptions& options, double uniform_share,
+                       bool* learnt) {
+  const int count = cv::countNonZero(labels == label);
+  *learnt = count >= options.min_nonground_training_pixels;
+  if (!*learnt) return ColourTable(static_cast<float>(kLogUniform));
+  const int step = std::max(1, count / options.max_training_pixels);
+  std::vector<float> colours;
+  colours.reserve(static_cast<std::size_t>(3 * (count / step + 1)));
+  int seen = 0;
+  for (int v = 0; v < labels.rows; ++v) {
+    const auto* row = labels.ptr<std::uint8_t>(v);
+    const auto* pixels = colour_bgr.ptr<cv::Vec3b>(v);
+    for (int u = 0; u < labels.cols; ++u) {
+      if (row[u] != label || seen++ % step != 0) continue;
+      colours.insert(colours.end(),
+                     {float(pixels[u][0]), float(pixels[u][1]), float(pixels[u][2])});
+    }
+  }
+  const cv::Mat samples(static_cast<int>(colours.size() / 3), 3, CV_32F, colours.data());
+  ColourGmmOptions gmm_options;
+  gmm_options.components = std::min(options.gmm_components, samples.rows / 10);
+  gmm_options.max_samples = options.max_training_pixels;
+  // Thesis 3.1 step 4: K-means initialises the mixture, which is trained and retrained once.
+  gmm_options.max_em_iterations = 2;
+  ColourGmm gmm(gmm_options);
+  gmm.Train(samples);
+  cv::Mat table = gmm.LogLikelihoods(ColourTable::CellCentres());
+  if (uniform_share > 0) {
+    for (float& value : cv::Mat_<float>(table)) {
+      value = static_cast<float>(std::log((1 - uniform_share) * std::exp(double(value)) +
+                                          uniform_share * std::exp(kLogUniform)));
+    }
+  }
+  return ColourTable(table);
+}
+
+double Beta(const cv::Mat& colour_bgr, const cv::Mat& labels) {
+  double sum = 0;
+  std::size_t pairs = 0;
+  for (int v = 0; v + 1 < labels.rows; ++v) {
+    for (int u = 0; u + 1 < labels.cols; ++u) {
+      if (labels.at<std::uint8_t>(v, u) != kUncertain) continue;
+      const cv::Vec3d c = colour_bgr.at<cv::Vec3b>(v, u);
+      const cv::Vec3d right = colour_bgr.at<cv::Vec3b>(v, u + 1);
+      const cv::Vec3d down = colour_bgr.at<cv::Vec3b>(v + 1, u);
+      sum += (c - right).dot(c - right) + (c - down).dot(c - down);
+      pairs += 2;
+    }
+  }
+  return sum > 0 ? static_cast<double>(pairs) / (2.0 * sum) : 0.0;
+}
+
+struct CutModels {
+  const ColourTable& ground;
+  const ColourTable& non_ground;
+  double beta;
+};
+
+std::size_t GraphCut(const cv::Mat& colour_bgr, const cv::Mat& labels,
+                     const std::vector<float>& heights, const OrganizedCloud& cloud,
+                     const CutModels& models, const TextureRefinementOptions& options,
+                     cv::Mat* non_ground) {
+  std::vector<int> node(labels.total(), -1);
+  int nodes = 0;
+  for (std::size_t i = 0; i < labels.total(); ++i) {
+    if (labels.data[i] == kUncertain) node[i] = nodes++;
+  }
+  if (nodes == 0) return 0;
+  cv::detail::GCGraph<double> graph(static_cast<unsigned>(nodes), static_cast<unsigned>(2 * nodes));
+  const auto* colour = colour_bgr.ptr<cv::Vec3b>(0);
+  std::vector<double> source(static_cast<std::size_t>(nodes)),
+      sink(static_cast<std::size_t>(nodes));
+  for (std::size_t i = 0; i < labels.total(); ++i) {
+    if (node[i] < 0) continue;
+    graph.addVtx();
+    double to_ground = -models.ground(colour[i]);  // cost of calling the pixel ground
+    const double to_object = -models.non_ground(colour[i]);
+    if (!std::isnan(heights[i])) {
+      const float z = cloud.depth_m[i];
+      const double band =
+          std::max(options.min_ground_band_m, 2.0 * options.depth_noise_per_m2 * z * z);
+      to_ground += options.height_weight * std::clamp(heights[i] / band - 1.0, 0.0, 3.0);
+    }
+    source[static_cast<std::size_t>(node[i])] = to_ground;
+    sink[static_cast<std::size_t>(node[i])] = to_object;
+  }
+  const int width = labels.cols;
+  auto pair = [&](std::size_t a, std::size_t b) {
+    const cv::Vec3d d = cv::Vec3d(colour[a]) - cv::Vec3d(colour[b]);
+    const double w = options.smoothness_weight * std::exp(-models.beta * d.dot(d));
+    const int na = node[a], nb = node[b];
+    if (na >= 0 && nb >= 0) {
+      graph.addEdges(na, nb, w, w);
+    } else if (na >= 0 || nb >= 0) {
+      const int n = na >= 0 ? na : nb;
+      const std::uint8_t other = labels.data[na >= 0 ? b : a];
+      if (other == kGround) sink[static_cast<std::size_t>(n)] += w;
+      if (other == kNonGround) source[static_cast<std::size_t>(n)] += w;
+    }
+  };
+  for (int v = 0; v < labels.rows; ++v) {
+    for (int u = 0; u < width; ++u) {
+      const auto i = static_cast<std::size_t>(v * width + u);
+      if (u + 1 < width) pair(i, i + 1);
+      if (v + 1 < labels.rows) pair(i, i + static_cast<std::size_t>(width));
+    }
+  }
+  for (int n = 0; n < nodes; ++n)
+    graph.addTermWeights(n, source[static_cast<std::size_t>(n)], sink[static_cast<std::size_t>(n)]);
+  graph.maxFlow();
+  std::size_t cut = 0;
+  for (std::size_t i = 0; i < labels.total(); ++i) {
+    if (node[i] >= 0 && graph.inSourceSegment(node[i])) {
+      non_ground->data[i] = 255;
+      ++cut;
+    }
+  }
+  return cut;
+}
+
+}  // namespace
+
+void TextureRefinementOptions::Validate() const {
+  if (gmm_components < 1 || max_training_pixels < 50 || !(depth_noise_per_m2 >= 0) ||
+      !(min_ground_band_m > 0) || !(min_object_height_m >= 0) || !(smoothness_weight >= 0) ||
+      !(height_weight >= 0) || min_nonground_training_pixels < 1) {
+    throw UsageError("segmentation: texture refinement options out of range");
+  }
+}
+
+TextureRefinementResult RefineGroundByTexture(const cv::Mat& colour_bgr,
+                                              const OrganizedCloud& cloud,
+                                              const GroundResult& ground,
+                                              const TextureRefinementOptions& options) {
+  TextureRefinementResult result;
+  result.non_ground = cv::Mat::zeros(cloud.height, cloud.width, CV_8U);
+  result.region = GroundRegion(ground, cloud.width, cloud.height);
+  std::vector<float> heights;
+  result.labels = GeometricLabels(cloud, ground, result.region, options, &heights);
+  if (result.region.empty()) return result;
+
+  bool ground_learnt = false;
+  const ColourTable ground_model =
+      LearnTable(colour_bgr, result.labels, kGround, options, 0.0, &ground_learnt);
+  if (!ground_learnt) return result;
+  const ColourTable non_ground_model = LearnTable(colour_bgr, result.labels, kNonGround, options,
+                                                  0.5, &result.non_ground_model_learnt);
+  // Ground-component pixels coloured like the non-ground become uncertain.
+  const auto* colour = colour_bgr.ptr<cv::Vec3b>(0);
+  for (std::size_t i = 0; i < result.labels.total(); ++i) {
+    std::uint8_t& label = result.labels.data[i];
+    if (label == kNonGround) result.non_ground.data[i] = 255;
+    if (label == kGround &&
+        non_ground_model(colour[i]) - ground_model(colour[i]) > options.colour_anomaly_log_ratio) {
+      label = kUncertain;
+    }
+    if (label == kUncertain) ++result.uncertain;
+  }
+  const CutModels models{ground_model, non_ground_model, Beta(colour_bgr, result.labels)};
+  result.cut_to_non_ground =
+      GraphCut(colour_bgr, result.labels, heights, cloud, models, options, &result.non_ground);
+  return result;
+}
+
+}  // namespace littermap::detect

@@ -1,0 +1,111 @@
+// Ground segmentation (thesis 3.1) on ray-cast scenes with known objects, and on the real TUM
+// desk pair where the desk plays the ground.
+
+#include "detect/frame_segmenter.hpp"
+
+#include <gtest/gtest.h>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "synthetic_scene.hpp"
+
+namespace littermap::detect {
+namespace {
+
+using testing::RenderScene;
+using testing::SceneBox;
+using testing::SyntheticScene;
+
+FrameSegmentation Segment(const SyntheticScene& scene) {
+  const CameraIntrinsics K;
+  cv::Mat colour, depth;
+  RenderScene(scene, K, &colour, &depth);
+  FrameSegmenter segmenter(SegmentationOptions{});
+  return segmenter.Segment(colour, depth, K, testing::CameraPose().cast<float>());
+}
+
+TEST(FrameSegmenter, FindsTheGroundAndNothingElseOnAnEmptyLawn) {
+  const FrameSegmentation result = Segment(SyntheticScene{});
+  ASSERT_TRUE(result.ground_found);
+  // Depth noise grows to ~2 cm at 4.5 m; the fitted plane must stay within a few mm of it.
+  EXPECT_LT(result.ground_rms_m, 0.01);
+  EXPECT_NEAR(result.ground.HeightAt(2.0, 0.0), 0.0, 0.01);
+  EXPECT_GT(result.ground_points, 100000u);
+  EXPECT_TRUE(result.objects.empty());
+}
+
+TEST(FrameSegmenter, SlopedGroundIsGroundNotAnObject) {
+  SyntheticScene scene;
+  scene.slope_deg = 8;
+  const FrameSegmentation result = Segment(scene);
+  ASSERT_TRUE(result.ground_found);
+  EXPECT_NEAR(result.ground.HeightAt(3.0, 0.0), 3.0 * std::tan(8.0 * M_PI / 180.0), 0.02);
+  EXPECT_TRUE(result.objects.empty());
+}
+
+TEST(FrameSegmenter, CutsOutLitterSizedBoxesAndMeasuresThem) {
+  SyntheticScene scene;
+  // A can-sized box 2 m ahead and a flat carton 3 m ahead to the left.
+  scene.boxes.push_back({{2.0, -0.05, 0.0}, {2.12, 0.02, 0.07}, {40, 40, 200}});
+  scene.boxes.push_back({{3.0, 0.5, 0.0}, {3.2, 0.6, 0.03}, {230, 230, 230}});
+  const FrameSegmentation result = Segment(scene);
+  ASSERT_TRUE(result.ground_found);
+  ASSERT_EQ(result.objects.size(), 2u);
+  std::vector<SegmentedObject> objects = result.objects;
+  std::sort(objects.begin(), objects.end(),
+            [](const auto& a, const auto& b) { return a.range_m < b.range_m; });
+  // Visible surfaces only: the centroid sits on the camera's side and top, within 5 cm.
+  EXPECT_NEAR(objects[0].centroid_level_m.x(), 2.06, 0.05);
+  EXPECT_NEAR(objects[0].centroid_level_m.y(), -0.015, 0.03);
+  EXPECT_NEAR(objects[0].height_m, 0.07, 0.02);
+  EXPECT_NEAR(objects[0].size_m, 0.12, 0.04);
+  EXPECT_NEAR(objects[1].centroid_level_m.x(), 3.1, 0.06);
+  EXPECT_NEAR(objects[1].centroid_level_m.y(), 0.55, 0.04);
+  EXPECT_NEAR(objects[1].size_m, 0.2, 0.06);
+}
+
+TEST(FrameSegmenter, ObjectsTallerThanLitterAreNotObjects) {
+  SyntheticScene scene;
+  scene.boxes.push_back({{2.5, -0.3, 0.0}, {2.9, 0.3, 1.5}, {30, 60, 90}});  // a wall-ish block
+  const FrameSegmentation result = Segment(scene);
+  ASSERT_TRUE(result.ground_found);
+  EXPECT_TRUE(result.objects.empty());
+}
+
+// The TUM freiburg2 desk, camera about 0.8 m above the desk and pitched ~40 degrees down: the
+// desk is the ground; the mug, the tape roll and the can standing on it are objects.
+TEST(FrameSegmenter, RealDeskFromTumIsGroundWithObjectsOnIt) {
+  const std::string dir = std::string(LITTERMAP_DATASETS_DIR) + "/tum_pair/";
+  const cv::Mat colour = cv::imread(dir + "1.png", cv::IMREAD_COLOR);
+  const cv::Mat raw = cv::imread(dir + "1_depth.png", cv::IMREAD_UNCHANGED);
+  ASSERT_FALSE(colour.empty());
+  ASSERT_FALSE(raw.empty());
+  cv::Mat depth_mm;
+  raw.convertTo(depth_mm, CV_16U, 1000.0 / 5000.0);  // TUM: 5000 units per metre
+  const CameraIntrinsics K{520.909, 521.007, 325.141, 249.702, 640, 480};
+  Eigen::Isometry3d T_body_optical = Eigen::Isometry3d::Identity();
+  T_body_optical.linear() << 0, 0, 1, -1, 0, 0, 0, -1, 0;
+  const Eigen::Isometry3d T =
+      MakeIsometry({0, 0, 0.8}, {0, 40.0 * M_PI / 180.0, 0}) * T_body_optical;
+  SegmentationOptions options;
+  options.ground.max_level_offset_m = 1.0;  // the desk is not at wheel level
+  FrameSegmenter segmenter(options);
+  const FrameSegmentation result = segmenter.Segment(colour, depth_mm, K, T.cast<float>());
+  ASSERT_TRUE(result.ground_found);
+  EXPECT_LT(result.ground_rms_m, 0.03);
+  EXPECT_GT(result.ground_points, 50000u);
+  // Pixels on the mug, the tape roll and the red can (looked up in 1.png).
+  const std::vector<cv::Point> expected = {{465, 325}, {572, 318}, {62, 292}};
+  int found = 0;
+  for (const cv::Point& p : expected) {
+    for (const auto& object : result.objects) found += object.box.contains(p) ? 1 : 0;
+  }
+  EXPECT_GE(found, 2) << result.objects.size() << " objects";
+  for (const auto& object : result.objects) {
+    EXPECT_LE(object.size_m, 0.4);
+    EXPECT_GE(object.size_m, 0.03);
+  }
+}
+
+}  // namespace
+}  // namespace littermap::detect
