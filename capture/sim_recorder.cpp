@@ -136,7 +136,7 @@ class RunRecorder {
     writer_.WriteMessage(topics::kDepthCameraInfo, stamp, info);
     writer_.WriteMessage(topics::kDepth, stamp, EncodeDepthPng(render.depth_mm, header, codec_));
     if (masks_ && sim::WantsInstanceMask(static_cast<std::int64_t>(k), camera_.options())) {
-      masks_->Write(k, stamp, render.instance_ids);
+      masks_->Write(k, stamp, render.instance_ids, render.depth_mm);
     }
   }
 

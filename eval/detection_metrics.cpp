@@ -299,7 +299,8 @@ std::vector<TruthObject> ReadTruthObjects(const std::filesystem::path& file, boo
 VisiblePixels ReadVisiblePixels(const std::filesystem::path& file) {
   VisiblePixels visible;
   ReadCsv(file, {"object_id", "pixels"}, [&](const CsvRow& row) {
-    const std::size_t pixels = Count(row, "pixels");
+    // Pixels with a depth reading when the file says (an RGB-D detector can place only those).
+    const std::size_t pixels = Count(row, row.Has("depth_pixels") ? "depth_pixels" : "pixels");
     std::size_t& largest = visible[NonEmpty(row, "object_id")];
     largest = std::max(largest, pixels);
   });

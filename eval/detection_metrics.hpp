@@ -114,7 +114,8 @@ DetectionMetrics EvaluateDetections(const std::vector<DetectedItem>& detected,
 std::vector<DetectedItem> ReadDetectedItems(const std::filesystem::path& file);
 // litter.csv or natural.csv (id, class, x, y required); `litter` says which the file holds.
 std::vector<TruthObject> ReadTruthObjects(const std::filesystem::path& file, bool litter);
-// masks/visible.csv (object_id, pixels required): the largest pixels of each object.
+// masks/visible.csv (object_id, pixels required): the largest pixel count of each object, of
+// its pixels with a depth reading when the file has a depth_pixels column.
 VisiblePixels ReadVisiblePixels(const std::filesystem::path& file);
 
 }  // namespace littermap::eval

@@ -46,24 +46,29 @@ InstanceMaskWriter::InstanceMaskWriter(const std::filesystem::path& truth_dir)
   std::filesystem::create_directories(directory_, error);
   if (error) throw InternalError(directory_.string() + ": cannot create: " + error.message());
   index_ = OpenCsv(directory_ / "index.csv", "frame,stamp_ns,file");
-  visible_ = OpenCsv(directory_ / "visible.csv", "frame,object_id,pixels");
+  visible_ = OpenCsv(directory_ / "visible.csv", "frame,object_id,pixels,depth_pixels");
 }
 
-void InstanceMaskWriter::Write(std::size_t frame, TimestampNs stamp_ns,
-                               const cv::Mat& instance_ids) {
+void InstanceMaskWriter::Write(std::size_t frame, TimestampNs stamp_ns, const cv::Mat& instance_ids,
+                               const cv::Mat& depth_mm) {
   char name[32];
   std::snprintf(name, sizeof name, "frame_%06zu.png", frame);
   const std::filesystem::path path = directory_ / name;
   const cv::Mat mask = InstanceIdsToMask(instance_ids);
-  std::map<std::uint16_t, std::size_t> pixels;
+  std::map<std::uint16_t, std::pair<std::size_t, std::size_t>> pixels;  // all, with depth
   for (int row = 0; row < mask.rows; ++row) {
     const auto* value = mask.ptr<std::uint16_t>(row);
+    const auto* depth = depth_mm.ptr<std::uint16_t>(row);
     for (int col = 0; col < mask.cols; ++col) {
-      if (value[col] != kMaskGround && value[col] != kMaskSky) ++pixels[value[col]];
+      if (value[col] == kMaskGround || value[col] == kMaskSky) continue;
+      auto& [all, with_depth] = pixels[value[col]];
+      ++all;
+      with_depth += depth[col] > 0 ? 1 : 0;
     }
   }
-  for (const auto& [value, count] : pixels)
-    visible_ << frame << ',' << value - 1 << ',' << count << '\n';
+  for (const auto& [value, count] : pixels) {
+    visible_ << frame << ',' << value - 1 << ',' << count.first << ',' << count.second << '\n';
+  }
   if (!cv::imwrite(path.string(), mask, {cv::IMWRITE_PNG_COMPRESSION, 3})) {
     throw InternalError(path.string() + ": cannot write mask");
   }

@@ -7,8 +7,10 @@
 //   TRUTH_DIR/masks/index.csv         frame,stamp_ns,file — stamp_ns is the header stamp of the
 //                                     colour and depth images the mask belongs to, file the
 //                                     PNG's path relative to TRUTH_DIR
-//   TRUTH_DIR/masks/visible.csv       frame,object_id,pixels — every object seen in a masked
-//                                     frame and how many pixels show it (visibility truth)
+//   TRUTH_DIR/masks/visible.csv       frame,object_id,pixels,depth_pixels — every object seen in
+//                                     a masked frame, how many pixels show it and how many of
+//                                     those have a depth reading (within the depth camera's
+//                                     range: what an RGB-D detector can place)
 //
 // Pixel value v: 0 = ground (terrain), 65535 = sky / nothing within the colour range, otherwise
 // v - 1 = the world object id (`id` in world.json, litter.csv and natural.csv). Multi-part
@@ -37,8 +39,10 @@ class InstanceMaskWriter {
   // Creates TRUTH_DIR/masks. Throws InternalError when it cannot.
   explicit InstanceMaskWriter(const std::filesystem::path& truth_dir);
 
-  // Writes the mask of camera frame `frame` stamped stamp_ns. Throws InternalError on failure.
-  void Write(std::size_t frame, TimestampNs stamp_ns, const cv::Mat& instance_ids);
+  // Writes the mask of camera frame `frame` stamped stamp_ns; depth_mm (CV_16UC1, 0 = none) is
+  // the frame's depth image. Throws InternalError on failure.
+  void Write(std::size_t frame, TimestampNs stamp_ns, const cv::Mat& instance_ids,
+             const cv::Mat& depth_mm);
   // Flushes index.csv and visible.csv; throws InternalError if it could not be written.
   void Close();
 
