@@ -41,5 +41,7 @@ void RegisterIngestCommand(CLI::App& app, CliContext& context);
 void RegisterHeatmapCommand(CLI::App& app, CliContext& context);
 void RegisterDetectCommand(CLI::App& app, CliContext& context);
 void RegisterTrainCommands(CLI::App& app, CliContext& context);
+// Adds `eval segmentation` to the `eval` command; call after RegisterEvalCommands.
+void RegisterEvalSegmentationCommand(CLI::App& app, CliContext& context);
 
 }  // namespace littermap::cli

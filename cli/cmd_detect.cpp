@@ -42,7 +42,9 @@ void WriteItems(const std::filesystem::path& file, const std::vector<detect::Lit
   auto out = OpenCsv(file,
                      "id,class,x,y,z,size_m,confidence,views,litter,litter_probability,"
                      "first_seen_ns,last_seen_ns");
-  for (const auto& item : items) {
+  for (auto item : items) {
+    item.best_class = classifier.Decide(item.class_probabilities);
+    item.confidence = item.class_probabilities[item.best_class];
     if (item.best_class == clutter) continue;
     double litter_probability = 0;
     for (std::size_t k = 0; k < item.class_probabilities.size(); ++k) {
@@ -111,8 +113,9 @@ void RunDetect(const DetectArguments& arguments, CliContext& context) {
   WriteItems(out_dir / "items.csv", items, classifier, clutter);
   std::size_t litter = 0, natural = 0;
   for (const auto& item : items) {
-    if (item.best_class == clutter) continue;
-    (classifier.is_litter(item.best_class) ? litter : natural) += 1;
+    const std::size_t best = classifier.Decide(item.class_probabilities);
+    if (best == clutter) continue;
+    (classifier.is_litter(best) ? litter : natural) += 1;
   }
   if (result.frames_without_pose > 0) {
     context.Warn(std::to_string(result.frames_without_pose) +

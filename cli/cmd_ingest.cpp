@@ -1,6 +1,7 @@
 // littermap ingest SITE.gpkg RUN_DIR: adds a reconstructed run (RUN_DIR/trajectory.tum and
-// RUN_DIR/items.csv) to a site database. Idempotent. Until the detect stage exists, the
-// simulator's truth (RUN_DIR/litter.csv) stands in for items.csv.
+// RUN_DIR/items.csv from `detect`) to a site database. Idempotent. A simulator TRUTH_DIR
+// (trajectory.tum, litter.csv) is accepted too: its truth stands in for detected items, e.g. to
+// compare a detected run with what was really there.
 // Registration: the first run with a map (RUN_DIR/map.yaml) defines the site map; later runs
 // start from the dock (the site origin, or --initial) and are placed by matching their map to
 // the site map, refused when the match is poor; --transform places a run by hand.

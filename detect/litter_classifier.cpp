@@ -201,6 +201,15 @@ LitterClassifier LitterClassifier::Train(const std::vector<ObjectSample>& sample
   model->forest->setMaxDepth(options.max_depth);
   model->forest->setMinSampleCount(options.min_samples_per_leaf);
   model->forest->setTermCriteria({cv::TermCriteria::MAX_ITER, options.trees, 0});
+  // Equal prior weight per class: the simulator (and a park) shows far more natural objects and
+  // clutter than bottles, and the forest must not learn that rarity as "not litter".
+  cv::Mat priors(1, static_cast<int>(by_class.size()), CV_32F);
+  {
+    int c = 0;
+    for (const auto& [label, members] : by_class)
+      priors.at<float>(c++) = 1.0f / static_cast<float>(members.size());
+  }
+  model->forest->setPriors(priors / cv::sum(priors)[0]);
   cv::setRNGSeed(static_cast<int>(options.seed));
   model->forest->train(cv::ml::TrainData::create(features, cv::ml::ROW_SAMPLE, responses));
   LitterClassifier classifier(std::move(model));
@@ -231,13 +240,32 @@ Classification LitterClassifier::Classify(const ObjectSample& object) const {
     if (k < out.probabilities.size() && total > 0)
       out.probabilities[k] = votes.at<int>(1, c) / total;
   }
-  out.best = static_cast<std::size_t>(
-      std::max_element(out.probabilities.begin(), out.probabilities.end()) -
-      out.probabilities.begin());
+  out.best = Decide(out.probabilities);
   for (std::size_t k = 0; k < out.probabilities.size(); ++k) {
     if (model_->litter[k]) out.litter_probability += out.probabilities[k];
   }
   return out;
+}
+
+std::size_t LitterClassifier::Decide(const std::vector<double>& probabilities) const {
+  // Kinds: the litter classes together; every other class on its own.
+  const std::size_t n = probabilities.size();
+  double litter = 0;
+  std::size_t best_other = n;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (model_->litter[k]) {
+      litter += probabilities[k];
+    } else if (best_other == n || probabilities[k] > probabilities[best_other]) {
+      best_other = k;
+    }
+  }
+  const bool choose_litter = best_other == n || litter >= probabilities[best_other];
+  std::size_t best = n;
+  for (std::size_t k = 0; k < n; ++k) {
+    if ((model_->litter[k] != 0) != choose_litter) continue;
+    if (best == n || probabilities[k] > probabilities[best]) best = k;
+  }
+  return best;
 }
 
 std::size_t LitterClassifier::Predict(const ObjectSample& object, ClassifierMethod method) const {

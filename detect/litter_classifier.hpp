@@ -53,6 +53,11 @@ class LitterClassifier {
   void Save(const std::filesystem::path& file) const;
 
   Classification Classify(const ObjectSample& object) const;
+  // The class for a probability vector, decided in two steps as the thesis's insight suggests
+  // (the real split is natural vs not): first the kind with the largest summed probability
+  // (litter classes together, natural, clutter), then the likeliest class of that kind. Seven
+  // litter classes sharing one object's votes must not lose to one natural class.
+  std::size_t Decide(const std::vector<double>& probabilities) const;
   // The class one method alone picks (kCombined: Classify's best).
   std::size_t Predict(const ObjectSample& object, ClassifierMethod method) const;
 

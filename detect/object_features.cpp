@@ -10,12 +10,17 @@
 namespace littermap::detect {
 namespace {
 
+// Mean chroma (s cos h, s sin h), mean and spread of S and V, and the mean gradient magnitude
+// of the brightness (texture: bark, petals and gravel are busy; cans and cartons are smooth).
 void AppendColourStatistics(const cv::Mat& colour_bgr, const cv::Mat& mask,
                             std::vector<float>* raw) {
-  cv::Mat scaled, hsv;
+  cv::Mat scaled, hsv, grey, dx, dy;
   colour_bgr.convertTo(scaled, CV_32FC3, 1.0 / 255.0);
   cv::cvtColor(scaled, hsv, cv::COLOR_BGR2HSV);
-  double cx = 0, cy = 0, s_sum = 0, v_sum = 0, v_squares = 0;
+  cv::cvtColor(scaled, grey, cv::COLOR_BGR2GRAY);
+  cv::Sobel(grey, dx, CV_32F, 1, 0);
+  cv::Sobel(grey, dy, CV_32F, 0, 1);
+  double cx = 0, cy = 0, s_sum = 0, s_squares = 0, v_sum = 0, v_squares = 0, gradient = 0;
   int n = 0;
   for (int v = 0; v < hsv.rows; ++v) {
     for (int u = 0; u < hsv.cols; ++u) {
@@ -25,17 +30,19 @@ void AppendColourStatistics(const cv::Mat& colour_bgr, const cv::Mat& mask,
       cx += p[1] * std::cos(h);
       cy += p[1] * std::sin(h);
       s_sum += p[1];
+      s_squares += p[1] * p[1];
       v_sum += p[2];
       v_squares += p[2] * p[2];
+      gradient += std::hypot(dx.at<float>(v, u), dy.at<float>(v, u));
       ++n;
     }
   }
-  const double mean_v = v_sum / n;
-  raw->push_back(static_cast<float>(cx / n));
-  raw->push_back(static_cast<float>(cy / n));
-  raw->push_back(static_cast<float>(s_sum / n));
-  raw->push_back(static_cast<float>(mean_v));
-  raw->push_back(static_cast<float>(std::sqrt(std::max(0.0, v_squares / n - mean_v * mean_v))));
+  const double mean_s = s_sum / n, mean_v = v_sum / n;
+  for (const double value :
+       {cx / n, cy / n, mean_s, mean_v, std::sqrt(std::max(0.0, s_squares / n - mean_s * mean_s)),
+        std::sqrt(std::max(0.0, v_squares / n - mean_v * mean_v)), gradient / n}) {
+    raw->push_back(static_cast<float>(value));
+  }
 }
 
 }  // namespace

@@ -19,9 +19,10 @@ struct ObjectDescription {
   std::vector<float> raw;     // the feature vector below
 };
 
-// raw = 9 bin shares, chroma (s cos h, s sin h), mean S, mean V, V spread, fill ratio of the box,
-// box aspect, size_m, width_m, height_m, height/size, 6 log-scaled Hu moments.
-inline constexpr int kRawFeatureCount = 9 + 5 + 2 + 4 + 6;
+// raw = 9 bin shares, chroma (s cos h, s sin h), mean S, mean V, S and V spread, mean brightness
+// gradient, fill ratio of the box, box aspect, size_m, width_m, height_m, height/size, 6
+// log-scaled Hu moments.
+inline constexpr int kRawFeatureCount = 9 + 7 + 2 + 4 + 6;
 
 ObjectDescription DescribeObject(const ObjectSample& object);
 

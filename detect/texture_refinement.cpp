@@ -32,8 +32,8 @@ cv::Rect GroundRegion(const GroundResult& ground, int width, int height) {
 
 // Geometry's verdict per pixel (thesis: certain object, certain background, uncertain).
 cv::Mat GeometricLabels(const OrganizedCloud& cloud, const GroundResult& ground,
-                        const cv::Rect& region, const TextureRefinementOptions& options,
-                        std::vector<float>* heights) {
+                        const cv::Rect& region, int ground_top,
+                        const TextureRefinementOptions& options, std::vector<float>* heights) {
   cv::Mat labels(cloud.height, cloud.width, CV_8U, cv::Scalar(kOutside));
   heights->assign(cloud.points_m.size(), kNaN);
   for (int v = region.y; v < region.br().y; ++v) {
@@ -42,7 +42,8 @@ cv::Mat GeometricLabels(const OrganizedCloud& cloud, const GroundResult& ground,
       const int i = cloud.Index(u, v);
       const auto index = static_cast<std::size_t>(i);
       if (!cloud.HasPoint(i)) {
-        row[u] = kUncertain;
+        // Above the ground's box (the margin) only points are examined: the rest is far away.
+        row[u] = v >= ground_top ? kUncertain : kOutside;
         continue;
       }
       const float z = cloud.depth_m[index];
@@ -190,8 +191,8 @@ std::size_t GraphCut(const cv::Mat& colour_bgr, const cv::Mat& labels,
 
 void TextureRefinementOptions::Validate() const {
   if (gmm_components < 1 || max_training_pixels < 50 || !(depth_noise_per_m2 >= 0) ||
-      !(min_ground_band_m > 0) || !(min_object_height_m >= 0) || !(smoothness_weight >= 0) ||
-      !(height_weight >= 0) || min_nonground_training_pixels < 1) {
+      region_margin_px < 0 || !(min_ground_band_m > 0) || !(min_object_height_m >= 0) ||
+      !(smoothness_weight >= 0) || !(height_weight >= 0) || min_nonground_training_pixels < 1) {
     throw UsageError("segmentation: texture refinement options out of range");
   }
 }
@@ -202,9 +203,14 @@ TextureRefinementResult RefineGroundByTexture(const cv::Mat& colour_bgr,
                                               const TextureRefinementOptions& options) {
   TextureRefinementResult result;
   result.non_ground = cv::Mat::zeros(cloud.height, cloud.width, CV_8U);
-  result.region = GroundRegion(ground, cloud.width, cloud.height);
+  const cv::Rect ground_box = GroundRegion(ground, cloud.width, cloud.height);
+  const int ground_top = ground_box.y;
+  const int region_top = std::max(0, ground_box.y - options.region_margin_px);
+  result.region = ground_box.empty() ? ground_box
+                                     : cv::Rect(ground_box.x, region_top, ground_box.width,
+                                                ground_box.br().y - region_top);
   std::vector<float> heights;
-  result.labels = GeometricLabels(cloud, ground, result.region, options, &heights);
+  result.labels = GeometricLabels(cloud, ground, result.region, ground_top, options, &heights);
   if (result.region.empty()) return result;
 
   bool ground_learnt = false;

@@ -36,6 +36,9 @@ struct TextureRefinementOptions {
   // A ground-component pixel whose colour is this much (log) likelier under the non-ground
   // model becomes uncertain: flat litter lies on the ground component.
   double colour_anomaly_log_ratio = 1.0;
+  // The region examined: the ground's image box, grown upwards by this many pixels so that an
+  // object standing at the far edge of the ground is examined whole (only its pixels with depth).
+  int region_margin_px = 40;
   double smoothness_weight = 25.0;  // gamma (4-neighbourhood)
   double height_weight = 3.0;       // per band of height above the surface, capped at 3 bands
   // Fewer certain non-ground pixels than this: the non-ground model is uniform over colours.

@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Litter detection scored on simulated parks whose seeds the shipped model was not trained on
+# (scripts/train-model.sh uses 11-18): simulate, detect with the true trajectory (detection
+# alone) and with the reconstructed one (the pipeline), and score items against the truth.
+#   bench/detect_eval.sh LITTERMAP_BINARY WORK_DIR [SEED...]     (default seeds 7 21 22 23)
+# Prints one table row per seed and trajectory. About 6 minutes per seed on one core.
+set -euo pipefail
+littermap=$1
+work=$2
+shift 2
+seeds=("$@")
+if [[ ${#seeds[@]} -eq 0 ]]; then seeds=(7 21 22 23); fi
+here=$(cd "$(dirname "$0")/.." && pwd)
+world="$here/samples/worlds/park_small.yaml"
+mkdir -p "$work"
+printf "%-5s %-13s %9s %6s %6s %8s %10s %14s %6s %6s\n" seed trajectory precision recall f1 \
+  "class" litter/nat "truth litter" tp fp
+for seed in "${seeds[@]}"; do
+  run="$work/seed$seed"
+  if [[ ! -f "$run/truth/masks/visible.csv" ]]; then
+    "$littermap" simulate "$world" -o "$run/bag" --truth "$run/truth" --seed "$seed" --quiet >/dev/null
+  fi
+  if [[ ! -f "$run/run/trajectory.tum" ]]; then
+    "$littermap" reconstruct "$run/bag" -o "$run/run" --quiet >/dev/null
+  fi
+  for source in truth slam; do
+    out="$run/detect-$source"
+    trajectory="$run/truth/trajectory.tum"
+    [[ $source == slam ]] && trajectory="$run/run/trajectory.tum"
+    if [[ ! -f "$out/items.csv" ]]; then
+      "$littermap" detect "$run/bag" --run "$run/run" -o "$out" --trajectory "$trajectory" \
+        --quiet >"$out.log"
+    fi
+    "$littermap" eval detections "$out/items.csv" "$run/truth/litter.csv" \
+      --natural "$run/truth/natural.csv" --visible "$run/truth/masks/visible.csv" --json \
+      >"$out/eval.json"
+    python3 - "$seed" "$source" "$out/eval.json" <<'PY'
+import json, sys
+seed, source, path = sys.argv[1:4]
+m = json.load(open(path))
+print("%-5s %-13s %9.3f %6.3f %6.3f %8.3f %10.3f %14d %6d %6d" % (
+    seed, source, m["precision"], m["recall"], m["f1"], m["class_accuracy"],
+    m["litter_natural_accuracy"], m["truth_litter"], m["true_positives"], m["false_positives"]))
+PY
+  done
+done

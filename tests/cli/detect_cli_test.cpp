@@ -1,0 +1,110 @@
+// `littermap detect`, `samples`, `train` and `eval segmentation` end to end on the first 45 s of
+// the sample park (seed 7, not a training seed of the shipped model): three litter items come
+// within the depth camera's range and view on the way, among natural look-alikes.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "support/run_command.hpp"
+#include "support/temp_dir.hpp"
+
+namespace littermap {
+namespace {
+
+using testing::RunLittermap;
+
+std::string Quote(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
+
+class DetectCli : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new testing::TempDir;
+    const auto world =
+        std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "worlds" / "park_small.yaml";
+    const auto result =
+        RunLittermap("simulate " + Quote(world) + " -o " + Quote(*dir_ / "bag") + " --truth " +
+                     Quote(*dir_ / "truth") + " --duration 45 --quiet");
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    std::filesystem::create_directories(*dir_ / "run");
+  }
+  static void TearDownTestSuite() { delete dir_; }
+  static testing::TempDir* dir_;
+};
+testing::TempDir* DetectCli::dir_ = nullptr;
+
+TEST_F(DetectCli, FindsTheLitterOnTheWayAndWritesItemsAndDetections) {
+  const auto& d = *dir_;
+  const auto result =
+      RunLittermap("detect " + Quote(d / "bag") + " --run " + Quote(d / "run") + " --trajectory " +
+                   Quote(d / "truth" / "trajectory.tum") + " --every 2 --quiet");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("225 frames"), std::string::npos) << result.output;
+  std::ifstream items(d / "run" / "items.csv");
+  std::string header;
+  std::getline(items, header);
+  EXPECT_EQ(header,
+            "id,class,x,y,z,size_m,confidence,views,litter,litter_probability,first_seen_ns,"
+            "last_seen_ns");
+  const auto eval = RunLittermap("eval detections " + Quote(d / "run" / "items.csv") + " " +
+                                 Quote(d / "truth" / "litter.csv") + " --natural " +
+                                 Quote(d / "truth" / "natural.csv") + " --visible " +
+                                 Quote(d / "truth" / "masks" / "visible.csv") + " --json");
+  ASSERT_EQ(eval.exit_code, 0) << eval.output;
+  const auto json = nlohmann::json::parse(eval.output);
+  // Three litter items in view: at least two found (one may be missed at --every 2), at most one
+  // false alarm among the look-alikes, most natural items recognised as natural.
+  EXPECT_EQ(json.at("truth_litter").get<int>(), 3) << eval.output;
+  EXPECT_GE(json.at("true_positives").get<int>(), 2) << eval.output;
+  EXPECT_LE(json.at("false_positives").get<int>(), 1) << eval.output;
+  EXPECT_GE(json.at("litter_natural_accuracy").get<double>(), 0.75) << eval.output;
+}
+
+TEST_F(DetectCli, SegmentationIouOnTheInstanceMasks) {
+  const auto& d = *dir_;
+  const auto result = RunLittermap("eval segmentation " + Quote(d / "bag") + " " +
+                                   Quote(d / "truth") + " --json --quiet");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const auto json = nlohmann::json::parse(result.output);
+  ASSERT_TRUE(json.contains("all")) << result.output;
+  EXPECT_GE(json["all"]["objects"].get<int>(), 5);
+  // Objects with 100+ depth pixels: most are cut out with IoU >= 0.5.
+  EXPECT_GE(json["all"]["mean_iou"].get<double>(), 0.5) << result.output;
+}
+
+TEST_F(DetectCli, SamplesAndTrainMakeAModelDetectCanUse) {
+  const auto& d = *dir_;
+  auto result = RunLittermap("samples " + Quote(d / "bag") + " --truth " + Quote(d / "truth") +
+                             " -o " + Quote(d / "samples") + " --every 3 --quiet");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  result = RunLittermap("train " + Quote(d / "samples") + " -o " + Quote(d / "model.yml.gz") +
+                        " --trees 20 --validate " + Quote(d / "samples"));
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("combined (random forest)"), std::string::npos) << result.output;
+  result =
+      RunLittermap("detect " + Quote(d / "bag") + " --run " + Quote(d / "run") + " -o " +
+                   Quote(d / "own") + " --trajectory " + Quote(d / "truth" / "trajectory.tum") +
+                   " --model " + Quote(d / "model.yml.gz") + " --every 5 --quiet");
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_TRUE(std::filesystem::exists(d / "own" / "detections.csv"));
+}
+
+TEST_F(DetectCli, BadInputNamesTheFile) {
+  const auto& d = *dir_;
+  std::ofstream(d / "bad_model.yml") << "%YAML:1.0\nformat: nonsense\n";
+  auto result = RunLittermap("detect " + Quote(d / "bag") + " --run " + Quote(d / "run") +
+                             " --trajectory " + Quote(d / "truth" / "trajectory.tum") +
+                             " --model " + Quote(d / "bad_model.yml"));
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("bad_model.yml"), std::string::npos) << result.output;
+  // A run directory without a trajectory: the message names the missing file.
+  std::filesystem::create_directories(d / "run_no_traj");
+  result = RunLittermap("detect " + Quote(d / "bag") + " --run " + Quote(d / "run_no_traj"));
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("trajectory.tum"), std::string::npos) << result.output;
+}
+
+}  // namespace
+}  // namespace littermap
