@@ -3,7 +3,8 @@
 # (scripts/train-model.sh uses 11-18): simulate, detect with the true trajectory (detection
 # alone) and with the reconstructed one (the pipeline), and score items against the truth.
 #   bench/detect_eval.sh LITTERMAP_BINARY WORK_DIR [SEED...]     (default seeds 7 21 22 23)
-# Prints one table row per seed and trajectory. About 6 minutes per seed on one core.
+# Prints one table row per seed and trajectory (slam rows also give the run's ATE, since items
+# placed with it inherit its error). About 6 minutes per seed on one core.
 set -euo pipefail
 littermap=$1
 work=$2
@@ -13,8 +14,8 @@ if [[ ${#seeds[@]} -eq 0 ]]; then seeds=(7 21 22 23); fi
 here=$(cd "$(dirname "$0")/.." && pwd)
 world="$here/samples/worlds/park_small.yaml"
 mkdir -p "$work"
-printf "%-5s %-13s %9s %6s %6s %8s %10s %14s %6s %6s\n" seed trajectory precision recall f1 \
-  "class" litter/nat "truth litter" tp fp
+printf "%-5s %-10s %8s %9s %6s %6s %8s %10s %14s %6s %6s\n" seed trajectory ate_m precision \
+  recall f1 "class" litter/nat "truth litter" tp fp
 for seed in "${seeds[@]}"; do
   run="$work/seed$seed"
   if [[ ! -f "$run/truth/masks/visible.csv" ]]; then
@@ -31,15 +32,23 @@ for seed in "${seeds[@]}"; do
       "$littermap" detect "$run/bag" --run "$run/run" -o "$out" --trajectory "$trajectory" \
         --quiet >"$out.log"
     fi
+    # Items of the reconstructed run are in its map frame: align them as ATE aligns trajectories.
+    align=()
+    [[ $source == slam ]] && align=(--align "$run/run/trajectory.tum" "$run/truth/trajectory.tum")
     "$littermap" eval detections "$out/items.csv" "$run/truth/litter.csv" \
-      --natural "$run/truth/natural.csv" --visible "$run/truth/masks/visible.csv" --json \
-      >"$out/eval.json"
-    python3 - "$seed" "$source" "$out/eval.json" <<'PY'
+      --natural "$run/truth/natural.csv" --visible "$run/truth/masks/visible.csv" "${align[@]}" \
+      --json >"$out/eval.json"
+    ate=0
+    if [[ $source == slam ]]; then
+      ate=$("$littermap" eval trajectory "$run/run/trajectory.tum" "$run/truth/trajectory.tum" \
+        --json | python3 -c 'import json,sys; print(json.load(sys.stdin)["ate_rmse_m"])')
+    fi
+    python3 - "$seed" "$source" "$out/eval.json" "$ate" <<'PY'
 import json, sys
-seed, source, path = sys.argv[1:4]
+seed, source, path, ate = sys.argv[1:5]
 m = json.load(open(path))
-print("%-5s %-13s %9.3f %6.3f %6.3f %8.3f %10.3f %14d %6d %6d" % (
-    seed, source, m["precision"], m["recall"], m["f1"], m["class_accuracy"],
+print("%-5s %-10s %8.3f %9.3f %6.3f %6.3f %8.3f %10.3f %14d %6d %6d" % (
+    seed, source, float(ate), m["precision"], m["recall"], m["f1"], m["class_accuracy"],
     m["litter_natural_accuracy"], m["truth_litter"], m["true_positives"], m["false_positives"]))
 PY
   done

@@ -66,9 +66,25 @@ struct DetectionArguments {
   std::string truth;
   std::string natural;
   std::string visible;
+  std::vector<std::string> align;  // EST.tum REF.tum
   bool json = false;
   eval::DetectionMetricsOptions options;
 };
+
+// Items of a run placed in its own map frame, carried into the truth's frame by the rigid
+// alignment of the run's trajectory onto the reference (the one ATE uses).
+std::vector<eval::DetectedItem> AlignItems(std::vector<eval::DetectedItem> items,
+                                           const std::vector<std::string>& align) {
+  if (align.empty()) return items;
+  const eval::TrajectoryMetrics metrics =
+      eval::EvaluateTrajectory(Load(align[0]), Load(align[1]), eval::TrajectoryMetricsOptions{});
+  for (auto& item : items) {
+    const Eigen::Vector3d p =
+        metrics.T_reference_estimate * Eigen::Vector3d(item.position_m.x(), item.position_m.y(), 0);
+    item.position_m = p.head<2>();
+  }
+  return items;
+}
 
 nlohmann::ordered_json DetectionJson(const eval::DetectionMetrics& metrics,
                                      const eval::DetectionMetricsOptions& options) {
@@ -136,7 +152,8 @@ void RunDetections(const DetectionArguments& arguments) {
   std::optional<eval::VisiblePixels> visible;
   if (!arguments.visible.empty()) visible = eval::ReadVisiblePixels(arguments.visible);
   const eval::DetectionMetrics metrics = eval::EvaluateDetections(
-      eval::ReadDetectedItems(arguments.items), truth, arguments.options, visible);
+      AlignItems(eval::ReadDetectedItems(arguments.items), arguments.align), truth,
+      arguments.options, visible);
   if (arguments.json) {
     std::printf("%s\n", DetectionJson(metrics, arguments.options).dump(2).c_str());
     return;
@@ -191,6 +208,11 @@ void RegisterDetectionsCommand(CLI::App& eval_command, CliContext& context) {
       ->add_option("--match-radius", arguments->options.match_radius_m,
                    "Largest distance of a matched item and truth object, metres")
       ->capture_default_str();
+  detections
+      ->add_option("--align", arguments->align,
+                   "EST.tum REF.tum: carry the items into the truth's frame by the rigid alignment "
+                   "of the run's trajectory onto the reference trajectory (as ATE aligns them)")
+      ->expected(2);
   detections->add_flag("--json", arguments->json,
                        "JSON output (precision, recall, f1, per_class, confusion, ...)");
   detections->callback(

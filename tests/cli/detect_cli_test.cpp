@@ -18,26 +18,18 @@ using testing::RunLittermap;
 
 std::string Quote(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
 
-class DetectCli : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    dir_ = new testing::TempDir;
-    const auto world =
-        std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "worlds" / "park_small.yaml";
-    const auto result =
-        RunLittermap("simulate " + Quote(world) + " -o " + Quote(*dir_ / "bag") + " --truth " +
-                     Quote(*dir_ / "truth") + " --duration 45 --quiet");
-    ASSERT_EQ(result.exit_code, 0) << result.output;
-    std::filesystem::create_directories(*dir_ / "run");
-  }
-  static void TearDownTestSuite() { delete dir_; }
-  static testing::TempDir* dir_;
-};
-testing::TempDir* DetectCli::dir_ = nullptr;
+// One simulation for all checks: ctest runs every test in its own process.
+TEST(DetectCli, EndToEndOnTheFirst45SecondsOfTheSamplePark) {
+  testing::TempDir d;
+  const auto world =
+      std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "worlds" / "park_small.yaml";
+  auto result = RunLittermap("simulate " + Quote(world) + " -o " + Quote(d / "bag") + " --truth " +
+                             Quote(d / "truth") + " --duration 45 --quiet");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::filesystem::create_directories(d / "run");
 
-TEST_F(DetectCli, FindsTheLitterOnTheWayAndWritesItemsAndDetections) {
-  const auto& d = *dir_;
-  const auto result =
+  // detect with the shipped model, scored against the truth.
+  result =
       RunLittermap("detect " + Quote(d / "bag") + " --run " + Quote(d / "run") + " --trajectory " +
                    Quote(d / "truth" / "trajectory.tum") + " --every 2 --quiet");
   ASSERT_EQ(result.exit_code, 0) << result.output;
@@ -60,24 +52,19 @@ TEST_F(DetectCli, FindsTheLitterOnTheWayAndWritesItemsAndDetections) {
   EXPECT_GE(json.at("true_positives").get<int>(), 2) << eval.output;
   EXPECT_LE(json.at("false_positives").get<int>(), 1) << eval.output;
   EXPECT_GE(json.at("litter_natural_accuracy").get<double>(), 0.75) << eval.output;
-}
 
-TEST_F(DetectCli, SegmentationIouOnTheInstanceMasks) {
-  const auto& d = *dir_;
-  const auto result = RunLittermap("eval segmentation " + Quote(d / "bag") + " " +
-                                   Quote(d / "truth") + " --json --quiet");
+  // Segmentation IoU on the instance masks: objects with 100+ depth pixels are mostly cut out.
+  result = RunLittermap("eval segmentation " + Quote(d / "bag") + " " + Quote(d / "truth") +
+                        " --json --quiet");
   ASSERT_EQ(result.exit_code, 0) << result.output;
-  const auto json = nlohmann::json::parse(result.output);
-  ASSERT_TRUE(json.contains("all")) << result.output;
-  EXPECT_GE(json["all"]["objects"].get<int>(), 5);
-  // Objects with 100+ depth pixels: most are cut out with IoU >= 0.5.
-  EXPECT_GE(json["all"]["mean_iou"].get<double>(), 0.5) << result.output;
-}
+  const auto iou = nlohmann::json::parse(result.output);
+  ASSERT_TRUE(iou.contains("all")) << result.output;
+  EXPECT_GE(iou["all"]["objects"].get<int>(), 5);
+  EXPECT_GE(iou["all"]["mean_iou"].get<double>(), 0.5) << result.output;
 
-TEST_F(DetectCli, SamplesAndTrainMakeAModelDetectCanUse) {
-  const auto& d = *dir_;
-  auto result = RunLittermap("samples " + Quote(d / "bag") + " --truth " + Quote(d / "truth") +
-                             " -o " + Quote(d / "samples") + " --every 3 --quiet");
+  // samples + train make a model detect can use.
+  result = RunLittermap("samples " + Quote(d / "bag") + " --truth " + Quote(d / "truth") + " -o " +
+                        Quote(d / "samples") + " --every 3 --quiet");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   result = RunLittermap("train " + Quote(d / "samples") + " -o " + Quote(d / "model.yml.gz") +
                         " --trees 20 --validate " + Quote(d / "samples"));
@@ -91,12 +78,15 @@ TEST_F(DetectCli, SamplesAndTrainMakeAModelDetectCanUse) {
   EXPECT_TRUE(std::filesystem::exists(d / "own" / "detections.csv"));
 }
 
-TEST_F(DetectCli, BadInputNamesTheFile) {
-  const auto& d = *dir_;
+TEST(DetectCli, BadInputNamesTheFile) {
+  testing::TempDir d;
+  std::filesystem::create_directories(d / "bag");
+  std::filesystem::create_directories(d / "run");
+  std::ofstream(d / "truth_trajectory.tum") << "1.0 0 0 0 0 0 0 1\n2.0 1 0 0 0 0 0 1\n";
   std::ofstream(d / "bad_model.yml") << "%YAML:1.0\nformat: nonsense\n";
-  auto result = RunLittermap("detect " + Quote(d / "bag") + " --run " + Quote(d / "run") +
-                             " --trajectory " + Quote(d / "truth" / "trajectory.tum") +
-                             " --model " + Quote(d / "bad_model.yml"));
+  auto result =
+      RunLittermap("detect " + Quote(d / "bag") + " --run " + Quote(d / "run") + " --trajectory " +
+                   Quote(d / "truth_trajectory.tum") + " --model " + Quote(d / "bad_model.yml"));
   EXPECT_EQ(result.exit_code, 2) << result.output;
   EXPECT_NE(result.output.find("bad_model.yml"), std::string::npos) << result.output;
   // A run directory without a trajectory: the message names the missing file.

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
@@ -137,6 +139,39 @@ TEST(EvalDetectionsCli, BadArgumentsExitOne) {
   EXPECT_EQ(RunLittermap("eval detections " + files + " --min-pixels 10").exit_code, 1);
   EXPECT_EQ(RunLittermap("eval detections " + files + " --match-radius 0").exit_code, 1);
   EXPECT_EQ(RunLittermap("eval detections " + (dir / "items.csv").string()).exit_code, 1);
+}
+
+// A run reconstructed in its own map frame: the frame is the truth's world turned by 90 degrees
+// and shifted by (4, 4). --align carries the items back with the trajectories' alignment.
+TEST(EvalDetectionsCli, AlignCarriesItemsOfARunIntoTheTruthFrame) {
+  TempDir dir;
+  WriteScene(dir);
+  // Truth frame point (x, y) is run frame (y - 4, 4 - x): rotation by -90 degrees, then shift.
+  std::ofstream run_items(dir / "run_items.csv");
+  run_items << "id,class,x,y\n";
+  for (const auto& [id, cls, x, y] :
+       std::vector<std::tuple<const char*, const char*, double, double>>{{"a", "can", 0.0, 0.0},
+                                                                         {"b", "can", 5.0, 0.0}}) {
+    run_items << id << ',' << cls << ',' << y - 4 << ',' << 4 - x << '\n';
+  }
+  run_items.close();
+  std::ofstream reference(dir / "reference.tum"), estimate(dir / "estimate.tum");
+  for (int i = 0; i < 20; ++i) {  // an L-shaped drive, so the alignment is well determined
+    const double x = i < 10 ? i : 9, y = i < 10 ? 0 : i - 9;
+    reference << i << " " << x << " " << y << " 0 0 0 0 1\n";
+    estimate << i << " " << y - 4 << " " << 4 - x << " 0 0 0 -0.7071068 0.7071068\n";
+  }
+  reference.close();
+  estimate.close();
+  const std::string common = "eval detections " + (dir / "run_items.csv").string() + " " +
+                             (dir / "litter.csv").string() + " --json";
+  auto result = RunLittermap(common);
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_EQ(nlohmann::json::parse(result.output).at("true_positives"), 0);
+  result = RunLittermap(common + " --align " + (dir / "estimate.tum").string() + " " +
+                        (dir / "reference.tum").string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_EQ(nlohmann::json::parse(result.output).at("true_positives"), 2) << result.output;
 }
 
 }  // namespace
