@@ -36,8 +36,10 @@ step "detecting litter in the simulated run's RGB-D frames"
 "$littermap" detect "$out/park_small/bag" --run "$out/park_small/run" \
   --debug-frames "$out/park_small/run/segmentation"
 step "detected litter items against the simulator's ground truth"
+echo "(items are placed with the reconstructed trajectory: its error above moves them too)"
 "$littermap" eval detections "$out/park_small/run/items.csv" "$out/park_small/truth/litter.csv" \
-  --natural "$out/park_small/truth/natural.csv" --visible "$out/park_small/truth/masks/visible.csv"
+  --natural "$out/park_small/truth/natural.csv" --visible "$out/park_small/truth/masks/visible.csv" \
+  --align "$out/park_small/run/trajectory.tum" "$out/park_small/truth/trajectory.tum"
 
 step "site database and litter density map of the sample park"
 "$littermap" site init "$out/park_small/site.gpkg" --name "park_small"
