@@ -19,6 +19,7 @@
 #include "cli/cli_context.hpp"
 #include "core/error.hpp"
 #include "core/map_server_grey.hpp"
+#include "core/pose3.hpp"
 #include "db/site_database.hpp"
 #include "heatmap/run_ingest.hpp"
 #include "reconstruct/map_registration.hpp"
@@ -125,10 +126,7 @@ std::vector<PlanarPose> PlanarTrajectory(const std::vector<TumPose>& poses) {
   std::vector<PlanarPose> planar;
   planar.reserve(poses.size());
   for (const TumPose& pose : poses) {
-    const Eigen::Quaterniond& q = pose.orientation;
-    const double yaw = std::atan2(2.0 * (q.w() * q.z() + q.x() * q.y()),
-                                  1.0 - 2.0 * (q.y() * q.y() + q.z() * q.z()));
-    planar.push_back({pose.position_m.x(), pose.position_m.y(), yaw});
+    planar.push_back({pose.position_m.x(), pose.position_m.y(), YawOf(pose.orientation)});
   }
   return planar;
 }

@@ -42,6 +42,11 @@ inline Eigen::Isometry3d MakeIsometry(const Eigen::Vector3d& translation_m,
   return T;
 }
 
+// The yaw of a rotation (ZYX order, as RpyFromRotation): the heading of its x axis.
+inline double YawOf(const Eigen::Quaterniond& q) {
+  return std::atan2(2 * (q.w() * q.z() + q.x() * q.y()), 1 - 2 * (q.y() * q.y() + q.z() * q.z()));
+}
+
 // The planar part of a 3D pose: x, y and the heading of its x axis projected on the plane.
 inline PlanarPose ToPlanar(const Eigen::Isometry3d& T) {
   const Eigen::Vector3d x_axis = T.linear().col(0);

@@ -5,14 +5,10 @@
 #include <numbers>
 
 #include "core/error.hpp"
+#include "core/pose3.hpp"
 
 namespace littermap::detect {
 namespace {
-
-double YawOf(const Eigen::Quaterniond& q) {
-  const Eigen::Vector3d x = q * Eigen::Vector3d::UnitX();
-  return std::atan2(x.y(), x.x());
-}
 
 ObjectSample SampleOf(const RgbdFrame& frame, const SegmentedObject& object) {
   ObjectSample sample;

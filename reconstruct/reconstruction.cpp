@@ -9,13 +9,10 @@
 #include "capture/message_header.hpp"
 #include "capture/message_stream.hpp"
 #include "core/error.hpp"
+#include "core/pose3.hpp"
 
 namespace littermap::reconstruct {
 namespace {
-
-double Yaw(const msg::Quaternion& q) {
-  return std::atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z));
-}
 
 Tilt TiltOf(const msg::Quaternion& q) {  // roll and pitch of a ZYX (yaw-pitch-roll) rotation
   return {std::atan2(2 * (q.w * q.x + q.y * q.z), 1 - 2 * (q.x * q.x + q.y * q.y)),
@@ -64,7 +61,7 @@ PlanarPose ReadLaserExtrinsic(const std::filesystem::path& bag,
       if (transform.child_frame_id != frames::kLaser) continue;
       if (height_m != nullptr) *height_m = transform.transform.translation.z;
       return {transform.transform.translation.x, transform.transform.translation.y,
-              Yaw(transform.transform.rotation)};
+              YawOf(ToEigen(transform.transform.rotation))};
     }
   }
   warnings->push_back(bag.string() + ": no " + std::string(frames::kBase) + " -> " +
@@ -94,8 +91,8 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
   while (auto message = stream.Next()) {
     if (const auto* odom = std::get_if<msg::Odometry>(&message->message)) {
       const auto& pose = odom->pose.pose;
-      odometry.emplace(StampOf(odom->header),
-                       PlanarPose{pose.position.x, pose.position.y, Yaw(pose.orientation)});
+      odometry.emplace(StampOf(odom->header), PlanarPose{pose.position.x, pose.position.y,
+                                                         YawOf(ToEigen(pose.orientation))});
       continue;
     }
     if (const auto* imu = std::get_if<msg::Imu>(&message->message)) {
