@@ -3,6 +3,7 @@
 // `detect` does, and every litter and natural object it shows (with at least N pixels within
 // the depth range) is scored by the IoU of the best-overlapping detected object.
 
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -17,9 +18,9 @@
 #include "core/csv_table.hpp"
 #include "core/error.hpp"
 #include "detect/frame_segmenter.hpp"
-#include "detect/object_sample.hpp"
 #include "detect/rgbd_frames.hpp"
 #include "detect/segmentation_score.hpp"
+#include "eval/detection_metrics.hpp"
 
 namespace littermap::cli {
 namespace {
@@ -40,12 +41,14 @@ struct ClassScore {
 void RunEvalSegmentation(const SegmentationArguments& arguments, CliContext& context) {
   const std::filesystem::path truth = arguments.truth_dir;
   std::map<int, std::string> class_of;
-  for (const char* file : {"litter.csv", "natural.csv"}) {
-    ReadCsv(truth / file, {"id", "class"}, [&](const CsvRow& row) {
-      const std::string name = row.Text("class");
-      class_of[static_cast<int>(row.Number("id"))] =
-          detect::IsLitterClass(name) ? name : std::string("natural");
-    });
+  for (const eval::TruthObject& object : eval::ReadTruthDirectory(truth)) {
+    int id = 0;
+    const auto [end, error] =
+        std::from_chars(object.id.data(), object.id.data() + object.id.size(), id);
+    if (error != std::errc() || end != object.id.data() + object.id.size()) {
+      throw BadInputError(truth.string() + ": object id '" + object.id + "' is not an integer");
+    }
+    class_of[id] = object.litter ? object.class_name : std::string("natural");
   }
   std::map<std::size_t, std::filesystem::path> masks;
   ReadCsv(truth / "masks" / "index.csv", {"frame", "file"}, [&](const CsvRow& row) {

@@ -13,10 +13,10 @@
 #include "capture/tum_trajectory.hpp"
 #include "cli/cli_context.hpp"
 #include "cli/debug_frames.hpp"
-#include "core/csv_table.hpp"
 #include "core/error.hpp"
 #include "detect/litter_classifier.hpp"
 #include "detect/run_objects.hpp"
+#include "eval/detection_metrics.hpp"
 
 namespace littermap::cli {
 namespace {
@@ -30,40 +30,25 @@ struct SamplesArguments {
   detect::RunObjectsOptions options;
 };
 
-struct TruthObject {
-  Eigen::Vector2d xy;
-  std::string label;
-};
-
-std::vector<TruthObject> ReadTruthObjects(const std::filesystem::path& truth_dir) {
-  std::vector<TruthObject> objects;
-  for (const char* file : {"litter.csv", "natural.csv"}) {
-    const bool litter = std::string(file) == "litter.csv";
-    ReadCsv(truth_dir / file, {"class", "x", "y"}, [&](const CsvRow& row) {
-      objects.push_back(
-          {{row.Number("x"), row.Number("y")}, litter ? row.Text("class") : "natural"});
-    });
-  }
-  return objects;
-}
-
 // The label of an object at xy: the class of the truth object within the radius, "clutter" when
 // none is within twice the radius, empty (ambiguous: not a sample) in between.
-std::string LabelAt(const std::vector<TruthObject>& truth, const Eigen::Vector2d& xy,
+std::string LabelAt(const std::vector<eval::TruthObject>& truth, const Eigen::Vector2d& xy,
                     double radius) {
   double best = 1e9;
-  const TruthObject* nearest = nullptr;
+  const eval::TruthObject* nearest = nullptr;
   for (const auto& object : truth) {
-    const double d = (object.xy - xy).norm();
+    const double d = (object.position_m - xy).norm();
     if (d < best) best = d, nearest = &object;
   }
-  if (nearest != nullptr && best <= radius) return nearest->label;
+  if (nearest != nullptr && best <= radius) {
+    return nearest->litter ? nearest->class_name : std::string("natural");
+  }
   return best > 2 * radius ? "clutter" : "";
 }
 
 void RunSamples(const SamplesArguments& arguments, CliContext& context) {
   const std::filesystem::path truth_dir = arguments.truth_dir;
-  const auto truth = ReadTruthObjects(truth_dir);
+  const auto truth = eval::ReadTruthDirectory(truth_dir);
   const auto trajectory = ReadTumTrajectory(truth_dir / "trajectory.tum");
   std::vector<detect::ObjectSample> samples;
   std::map<std::string, int> counts;
@@ -118,7 +103,7 @@ void PrintValidation(const detect::LitterClassifier& classifier,
       correct += predicted == truth;
       if (sample.label == "clutter") continue;  // litter vs natural: objects of either kind
       ++split_total;
-      split_correct += classifier.is_litter(predicted) == detect::IsLitterClass(sample.label);
+      split_correct += classifier.is_litter(predicted) == IsLitterClass(sample.label);
     }
     std::printf("%-30s %10.3f %16.3f\n", detect::ClassifierMethodName(method),
                 double(correct) / double(std::max<std::size_t>(1, validation.size())),

@@ -11,11 +11,6 @@
 
 namespace littermap::detect {
 
-bool IsLitterClass(const std::string& label) {
-  const auto& litter = LitterClasses();
-  return std::find(litter.begin(), litter.end(), label) != litter.end();
-}
-
 std::vector<ObjectSample> ReadSamples(const std::filesystem::path& directory) {
   std::vector<ObjectSample> samples;
   const auto labels = directory / "labels.csv";

@@ -19,14 +19,9 @@
 
 #include <opencv2/core.hpp>
 
-namespace littermap::detect {
+#include "core/object_classes.hpp"
 
-inline const std::vector<std::string>& LitterClasses() {
-  static const std::vector<std::string> classes = {
-      "can", "bottle", "cup", "carton", "food_container", "plastic_bag", "other"};
-  return classes;
-}
-bool IsLitterClass(const std::string& label);
+namespace littermap::detect {
 
 struct ObjectSample {
   cv::Mat colour_bgr;  // CV_8UC3 crop

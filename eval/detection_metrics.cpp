@@ -179,25 +179,6 @@ void Confuse(const std::vector<DetectedItem>& detected,
 
 }  // namespace
 
-const std::vector<std::string>& LitterClasses() {
-  static const std::vector<std::string> classes = {
-      "can", "bottle", "cup", "carton", "food_container", "plastic_bag", "other"};
-  return classes;
-}
-
-const std::vector<std::string>& NaturalClasses() {
-  static const std::vector<std::string> classes = {"flower_red",    "flower_yellow", "flower_white",
-                                                   "flower_purple", "leaf",          "stone",
-                                                   "pine_cone",     "branch",        "mushroom"};
-  return classes;
-}
-
-bool IsNaturalClass(std::string_view class_name) {
-  const auto& natural = NaturalClasses();
-  return class_name == "natural" ||
-         std::find(natural.begin(), natural.end(), class_name) != natural.end();
-}
-
 void DetectionMetricsOptions::Validate() const {
   if (!(match_radius_m > 0) || !std::isfinite(match_radius_m)) {
     throw UsageError("match_radius_m must be > 0, got " + std::to_string(match_radius_m));
@@ -293,6 +274,13 @@ std::vector<TruthObject> ReadTruthObjects(const std::filesystem::path& file, boo
     objects.push_back(
         {NonEmpty(row, "id"), NonEmpty(row, "class"), {row.Number("x"), row.Number("y")}, litter});
   });
+  return objects;
+}
+
+std::vector<TruthObject> ReadTruthDirectory(const std::filesystem::path& truth_dir) {
+  std::vector<TruthObject> objects = ReadTruthObjects(truth_dir / "litter.csv", true);
+  const std::vector<TruthObject> natural = ReadTruthObjects(truth_dir / "natural.csv", false);
+  objects.insert(objects.end(), natural.begin(), natural.end());
   return objects;
 }
 

@@ -31,14 +31,9 @@
 
 #include <Eigen/Core>
 
-namespace littermap::eval {
+#include "core/object_classes.hpp"
 
-// The simulator's litter classes and natural look-alike classes (sim/world_spec.cpp), in the
-// order the tables list them.
-const std::vector<std::string>& LitterClasses();
-const std::vector<std::string>& NaturalClasses();
-// A natural class, or "natural" itself.
-bool IsNaturalClass(std::string_view class_name);
+namespace littermap::eval {
 
 struct DetectedItem {
   std::string id;
@@ -114,6 +109,8 @@ DetectionMetrics EvaluateDetections(const std::vector<DetectedItem>& detected,
 std::vector<DetectedItem> ReadDetectedItems(const std::filesystem::path& file);
 // litter.csv or natural.csv (id, class, x, y required); `litter` says which the file holds.
 std::vector<TruthObject> ReadTruthObjects(const std::filesystem::path& file, bool litter);
+// A simulator TRUTH_DIR's litter.csv and natural.csv together.
+std::vector<TruthObject> ReadTruthDirectory(const std::filesystem::path& truth_dir);
 // masks/visible.csv (object_id, pixels required): the largest pixel count of each object, of
 // its pixels with a depth reading when the file has a depth_pixels column.
 VisiblePixels ReadVisiblePixels(const std::filesystem::path& file);

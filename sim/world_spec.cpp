@@ -4,16 +4,14 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/object_classes.hpp"
 #include "sim/yaml_fields.hpp"
 
 namespace littermap::sim {
 namespace {
 
-const std::set<std::string> kLitterClasses = {
-    "can", "bottle", "cup", "carton", "food_container", "plastic_bag", "other"};
-const std::set<std::string> kNaturalClasses = {"flower_red",    "flower_yellow", "flower_white",
-                                               "flower_purple", "leaf",          "stone",
-                                               "pine_cone",     "branch",        "mushroom"};
+const std::set<std::string> kLitterClasses(LitterClasses().begin(), LitterClasses().end());
+const std::set<std::string> kNaturalClasses(NaturalClasses().begin(), NaturalClasses().end());
 
 void Check(const YamlFields& fields, const char* key, bool ok, const std::string& what) {
   if (!ok) fields.Fail(key, what);
