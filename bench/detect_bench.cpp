@@ -21,9 +21,7 @@ struct Frame {
 };
 
 Eigen::Isometry3d T_base_optical() {
-  Eigen::Isometry3d T_body_optical = Eigen::Isometry3d::Identity();
-  T_body_optical.linear() << 0, 0, 1, -1, 0, 0, 0, -1, 0;
-  return MakeIsometry({0.2, 0, 0.5}, {0, 25 * std::numbers::pi / 180, 0}) * T_body_optical;
+  return MakeIsometry({0.2, 0, 0.5}, {0, 25 * std::numbers::pi / 180, 0}) * sim::T_body_optical();
 }
 
 // Frames along the sample park's route, camera mounted as on the sample robot.
@@ -70,11 +68,7 @@ void BM_SegmentAndClassifyFrame(benchmark::State& state) {
       benchmark::DoNotOptimize(classifier.Classify(sample).best);
     }
     objects += segmentation.objects.size();
-    sum.cloud_ms += segmentation.timings.cloud_ms;
-    sum.components_ms += segmentation.timings.components_ms;
-    sum.ground_ms += segmentation.timings.ground_ms;
-    sum.texture_ms += segmentation.timings.texture_ms;
-    sum.objects_ms += segmentation.timings.objects_ms;
+    sum += segmentation.timings;
   }
   const double n = double(i);
   state.counters["frames_per_s"] = benchmark::Counter(n, benchmark::Counter::kIsRate);

@@ -29,6 +29,14 @@ struct SegmentationOptions {
 struct SegmentationTimings {
   double cloud_ms = 0, components_ms = 0, ground_ms = 0, texture_ms = 0, objects_ms = 0;
   double total_ms() const { return cloud_ms + components_ms + ground_ms + texture_ms + objects_ms; }
+  SegmentationTimings& operator+=(const SegmentationTimings& other) {
+    cloud_ms += other.cloud_ms;
+    components_ms += other.components_ms;
+    ground_ms += other.ground_ms;
+    texture_ms += other.texture_ms;
+    objects_ms += other.objects_ms;
+    return *this;
+  }
 };
 
 struct FrameSegmentation {

@@ -76,11 +76,7 @@ RunObjectsResult ForEachRunObject(
                           LevelledCamera(reader.T_base_camera(), frame.tilt));
     ++result.frames;
     result.frames_without_ground += !segmentation.ground_found;
-    result.time.cloud_ms += segmentation.timings.cloud_ms;
-    result.time.components_ms += segmentation.timings.components_ms;
-    result.time.ground_ms += segmentation.timings.ground_ms;
-    result.time.texture_ms += segmentation.timings.texture_ms;
-    result.time.objects_ms += segmentation.timings.objects_ms;
+    result.time += segmentation.timings;
     for (const SegmentedObject& object : segmentation.objects) {
       PlacedObject placed;
       placed.frame = &frame;

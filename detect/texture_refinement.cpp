@@ -16,6 +16,11 @@ namespace {
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 const double kLogUniform = -3.0 * std::log(256.0);  // uniform density over the BGR cube
 
+// The |height| a point at depth z may have and still be ground: two sigma of the depth noise.
+double GroundBand(const TextureRefinementOptions& options, float z) {
+  return std::max(options.min_ground_band_m, 2.0 * options.depth_noise_per_m2 * z * z);
+}
+
 cv::Rect GroundRegion(const GroundResult& ground, int width, int height) {
   int u0 = width, v0 = height, u1 = -1, v1 = -1;
   for (int v = 0; v < height; ++v) {
@@ -47,8 +52,7 @@ cv::Mat GeometricLabels(const OrganizedCloud& cloud, const GroundResult& ground,
         continue;
       }
       const float z = cloud.depth_m[index];
-      const double band =
-          std::max(options.min_ground_band_m, 2.0 * options.depth_noise_per_m2 * z * z);
+      const double band = GroundBand(options, z);
       const double h = ground.surface.HeightAbove(cloud.points_m[index]);
       (*heights)[index] = static_cast<float>(h);
       if (ground.is_ground[index] && std::abs(h) <= band) {
@@ -146,8 +150,7 @@ std::size_t GraphCut(const cv::Mat& colour_bgr, const cv::Mat& labels,
     const double to_object = -models.non_ground(colour[i]);
     if (!std::isnan(heights[i])) {
       const float z = cloud.depth_m[i];
-      const double band =
-          std::max(options.min_ground_band_m, 2.0 * options.depth_noise_per_m2 * z * z);
+      const double band = GroundBand(options, z);
       to_ground += options.height_weight * std::clamp(heights[i] / band - 1.0, 0.0, 3.0);
     }
     source[static_cast<std::size_t>(node[i])] = to_ground;

@@ -13,6 +13,7 @@
 
 #include "core/pose3.hpp"
 #include "detect/camera_intrinsics.hpp"
+#include "sim/camera_model.hpp"
 
 namespace littermap::testing {
 
@@ -31,9 +32,7 @@ struct SyntheticScene {
 };
 
 inline Eigen::Isometry3d CameraPose() {
-  Eigen::Isometry3d T_body_optical = Eigen::Isometry3d::Identity();
-  T_body_optical.linear() << 0, 0, 1, -1, 0, 0, 0, -1, 0;
-  return MakeIsometry({0.2, 0, 0.5}, {0, 25.0 * M_PI / 180.0, 0}) * T_body_optical;
+  return MakeIsometry({0.2, 0, 0.5}, {0, 25.0 * M_PI / 180.0, 0}) * sim::T_body_optical();
 }
 
 // Fills colour (CV_8UC3) and depth (CV_16UC1, mm) for the intrinsics.
