@@ -16,7 +16,7 @@ namespace {
 
 using testing::RunLittermap;
 
-std::string Quote(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
+using testing::Quote;
 
 // One simulation for all checks: ctest runs every test in its own process.
 TEST(DetectCli, EndToEndOnTheFirst45SecondsOfTheSamplePark) {

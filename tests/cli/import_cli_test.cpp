@@ -17,7 +17,7 @@ using testing::RunLittermap;
 
 const std::filesystem::path kDatasets(LITTERMAP_DATASETS_DIR);
 
-std::string Quote(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
+using testing::Quote;
 
 TEST(ImportCli, CarmenSucceedsWithSummaryAndWarning) {
   const auto log = kDatasets / "carmen" / "orebro-corrected.log.gz";

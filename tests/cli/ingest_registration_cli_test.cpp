@@ -18,7 +18,7 @@ using testing::RunLittermap;
 
 const std::filesystem::path kDatasets(LITTERMAP_DATASETS_DIR);
 
-std::string Quote(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
+using testing::Quote;
 
 // orebro imported with odometry noise `seed` and reconstructed into dir/run<seed>, with one
 // item at (1, 2) in the run's frame.
@@ -60,8 +60,8 @@ TEST(IngestRegistrationCli, LaterRunsAreMatchedOntoTheSiteMap) {
   EXPECT_NE(defining.output.find("becomes the site map"), std::string::npos) << defining.output;
 
   // Too far from where the run starts for the search window: refused, nothing stored.
-  const auto far = RunLittermap("ingest " + Quote(site) + " " + Quote(second) +
-                                " --initial 12 -9 70");
+  const auto far =
+      RunLittermap("ingest " + Quote(site) + " " + Quote(second) + " --initial 12 -9 70");
   EXPECT_EQ(far.exit_code, 2) << far.output;
   EXPECT_NE(far.output.find("does not match the site map"), std::string::npos) << far.output;
   EXPECT_NE(far.output.find("map.yaml"), std::string::npos) << far.output;
@@ -69,8 +69,8 @@ TEST(IngestRegistrationCli, LaterRunsAreMatchedOntoTheSiteMap) {
 
   // Both reconstructions start at the log's first pose, so the true placement is the identity
   // (up to the two SLAM runs' own errors, a few cm); the search starts 1.5 m and 8 deg off.
-  const auto matched = RunLittermap("ingest " + Quote(site) + " " + Quote(second) +
-                                    " --initial 1.2 -0.9 8");
+  const auto matched =
+      RunLittermap("ingest " + Quote(site) + " " + Quote(second) + " --initial 1.2 -0.9 8");
   ASSERT_EQ(matched.exit_code, 0) << matched.output;
   const std::vector<double> placed = Placement(site, 2);
   ASSERT_EQ(placed.size(), 4u);
@@ -81,8 +81,8 @@ TEST(IngestRegistrationCli, LaterRunsAreMatchedOntoTheSiteMap) {
 
   // By hand: stored as given, with no matching ratio.
   std::ofstream(second / "items.csv", std::ios::app) << "2,cup,3,3,0,0.1\n";
-  const auto by_hand = RunLittermap("ingest " + Quote(site) + " " + Quote(second) +
-                                    " --transform 100 50 90");
+  const auto by_hand =
+      RunLittermap("ingest " + Quote(site) + " " + Quote(second) + " --transform 100 50 90");
   ASSERT_EQ(by_hand.exit_code, 0) << by_hand.output;
   const std::vector<double> manual = Placement(site, 3);
   ASSERT_EQ(manual.size(), 4u);

@@ -19,7 +19,7 @@ using testing::RunLittermap;
 
 const std::filesystem::path kDatasets(LITTERMAP_DATASETS_DIR);
 
-std::string Quote(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
+using testing::Quote;
 
 std::string Slurp(const std::filesystem::path& path) {
   std::ifstream in(path);

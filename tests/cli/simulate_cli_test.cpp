@@ -21,7 +21,7 @@ using testing::RunLittermap;
 const std::filesystem::path kWorld =
     std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "worlds" / "park_small.yaml";
 
-std::string Quote(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
+using testing::Quote;
 
 int CountLines(const std::filesystem::path& path) {
   std::ifstream in(path);

@@ -71,8 +71,8 @@ TEST(MapRegistration, ARunThatMapsMoreThanTheSiteIsJudgedWhereTheyOverlap) {
 
 TEST(MapRegistration, RefusesADifferentPlace) {
   // A long corridor does not fit in the room anywhere.
-  const std::vector<testing::Segment> corridor = {{{0, 0}, {30, 0}}, {{0, 2}, {30, 2}},
-                                                  {{0, 0}, {0, 2}}};
+  const std::vector<testing::Segment> corridor = {
+      {{0, 0}, {30, 0}}, {{0, 2}, {30, 2}}, {{0, 0}, {0, 2}}};
   const MapRegistrationResult result =
       RegisterMap(WallPoints(testing::Room(), 0.01, 1), WallPoints(corridor, 0.01, 2), {}, {});
   EXPECT_FALSE(result.registered);

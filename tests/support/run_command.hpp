@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 namespace littermap::testing {
@@ -13,6 +14,9 @@ struct CommandResult {
   int exit_code = -1;
   std::string output;  // stdout and stderr together
 };
+
+// A path as one shell word (test paths hold no single quote).
+inline std::string Quote(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
 
 inline CommandResult RunLittermap(const std::string& arguments) {
   const std::string command = std::string(LITTERMAP_EXECUTABLE) + " " + arguments + " 2>&1";
