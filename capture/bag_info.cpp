@@ -2,8 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <fstream>
-
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 
 namespace littermap {
@@ -141,17 +140,8 @@ std::string MetadataYamlText(const BagInfo& info) {
 }
 
 void WriteMetadataYaml(const std::filesystem::path& path, const BagInfo& info) {
-  // Write to a temporary file and rename, so a crash never leaves a half-written metadata.yaml.
-  const std::filesystem::path temporary = path.string() + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::trunc);
-    out << MetadataYamlText(info);
-    out.flush();
-    if (!out) throw InternalError(temporary.string() + ": cannot write");
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) throw InternalError(path.string() + ": cannot write: " + error.message());
+  // A crash never leaves a half-written metadata.yaml.
+  WriteFileAtomically(path, MetadataYamlText(info));
 }
 
 }  // namespace littermap

@@ -4,13 +4,13 @@
 
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "cli/cli_context.hpp"
+#include "cli/date_argument.hpp"
 #include "core/error.hpp"
 #include "db/site_database.hpp"
 #include "heatmap/density_preview.hpp"
@@ -32,20 +32,6 @@ struct HeatmapArguments {
   heatmap::HotspotOptions hotspots;
 };
 
-// "2026-11-22" (UTC midnight) as Unix seconds.
-std::optional<double> ParseDate(const std::string& text, const char* option) {
-  if (text.empty()) return std::nullopt;
-  std::tm date{};
-  char rest = 0;
-  if (std::sscanf(text.c_str(), "%4d-%2d-%2d%c", &date.tm_year, &date.tm_mon, &date.tm_mday,
-                  &rest) != 3) {
-    throw UsageError(std::string(option) + " " + text + ": expected a date YYYY-MM-DD");
-  }
-  date.tm_year -= 1900;
-  date.tm_mon -= 1;
-  return static_cast<double>(timegm(&date));
-}
-
 void WriteRaster(const std::filesystem::path& file, const heatmap::Raster& raster,
                  const db::SiteFrame& frame, const std::string& citation, float nodata) {
   heatmap::GeoTiffOptions options;
@@ -56,8 +42,8 @@ void WriteRaster(const std::filesystem::path& file, const heatmap::Raster& raste
 }
 
 void RunHeatmap(HeatmapArguments arguments, CliContext& context) {
-  arguments.options.from_time_s = ParseDate(arguments.from, "--from");
-  arguments.options.to_time_s = ParseDate(arguments.to, "--to");
+  arguments.options.from_time_s = ParseDateArgument(arguments.from, "--from");
+  arguments.options.to_time_s = ParseDateArgument(arguments.to, "--to");
   arguments.hotspots.separation_m = arguments.options.density.kernel.bandwidth_m;
   db::SiteDatabase site = db::SiteDatabase::Open(arguments.site);
   const db::SiteFrame& frame = site.site().frame;

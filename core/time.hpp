@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <cstdint>
+#include <ctime>
+#include <string>
 
 namespace littermap {
 
@@ -14,6 +16,15 @@ inline double ToSeconds(TimestampNs t) { return static_cast<double>(t) * 1e-9; }
 
 inline TimestampNs FromSeconds(double seconds) {
   return static_cast<TimestampNs>(std::llround(seconds * 1e9));
+}
+
+// Unix seconds as UTC text for people, with a strftime format ("%Y-%m-%d %H:%M" by default).
+inline std::string FormatUtc(double unix_s, const char* format = "%Y-%m-%d %H:%M") {
+  const auto seconds = static_cast<std::time_t>(std::floor(unix_s));
+  std::tm utc{};
+  gmtime_r(&seconds, &utc);
+  char text[64];
+  return std::string(text, std::strftime(text, sizeof text, format, &utc));
 }
 
 }  // namespace littermap

@@ -1,0 +1,27 @@
+#include "core/atomic_file.hpp"
+
+#include <fstream>
+#include <system_error>
+
+#include "core/error.hpp"
+
+namespace littermap {
+
+void WriteFileAtomically(const std::filesystem::path& file, std::string_view contents) {
+  const std::filesystem::path temporary = file.string() + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
+    out.flush();
+    if (!out) {
+      std::error_code ignored;
+      std::filesystem::remove(temporary, ignored);
+      throw UsageError(file.string() + ": cannot write");
+    }
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, file, error);
+  if (error) throw UsageError(file.string() + ": cannot write: " + error.message());
+}
+
+}  // namespace littermap
