@@ -158,6 +158,8 @@ sim::WorldSpec RunSpec(const sim::WorldSpec& world_spec, const SimRecordOptions&
   sim::WorldSpec spec = world_spec;
   if (options.seed) spec.seed = *options.seed;
   if (options.run_seed) spec.run_seed = *options.run_seed;
+  if (options.start_time_s) spec.start_time_s = *options.start_time_s;
+  spec.litter_day = options.litter_day;
   spec.driven_route = options.route;
   spec.DrivenRoute();  // an unknown name fails before any file is created
   return spec;

@@ -24,6 +24,8 @@ struct SimRecordOptions {
   std::optional<std::uint64_t> seed;      // overrides the world's seed (world and noise)
   std::optional<std::uint64_t> run_seed;  // sensor noise, drift and timing only: same world
   std::string route;                      // a named route of the world; empty: `route`
+  std::optional<double> start_time_s;     // stamp of the first message; none: the world's
+  int litter_day = 0;                     // the litter of this day (sim::WorldSpec::litter_day)
   double max_duration_s = std::numeric_limits<double>::infinity();
   BagWriterOptions bag;
   int png_compression = 1;  // zlib level of the depth PNGs (capture/image_codec.hpp)

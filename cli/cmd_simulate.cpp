@@ -1,5 +1,6 @@
 // littermap simulate WORLD.yaml -o BAG --truth TRUTH_DIR [--seed N] [--run-seed N]
-//                   [--route NAME] [--duration S] [--contact-sheet FILE.png]
+//                   [--route NAME] [--duration S] [--start-time DATE] [--litter-day N]
+//                   [--contact-sheet FILE.png]
 // A survey run in a procedural park: a run bag like a real capture plus its ground truth.
 
 #include <cstdio>
@@ -7,6 +8,7 @@
 
 #include "capture/contact_sheet.hpp"
 #include "capture/sim_recorder.hpp"
+#include "cli/date_argument.hpp"
 #include "cli/simulate_run.hpp"
 #include "cli/truth_map.hpp"
 #include "core/error.hpp"
@@ -20,6 +22,8 @@ void RunSimulate(const SimulateRequest& request, CliContext& context) {
   options.seed = request.seed;
   options.run_seed = request.run_seed;
   options.route = request.route;
+  options.start_time_s = ParseDateArgument(request.start_time, "--start-time");
+  options.litter_day = request.litter_day;
   if (request.duration_s) {
     if (!(*request.duration_s > 0)) throw UsageError("--duration: must be positive");
     options.max_duration_s = *request.duration_s;
@@ -78,6 +82,14 @@ void RegisterSimulateCommand(CLI::App& app, CliContext& context) {
                        "Drive this route of the world's `routes` instead of `route`");
   simulate->add_option("--duration", request->duration_s,
                        "Stop after this many seconds of the route");
+  simulate->add_option("--start-time", request->start_time,
+                       "When the run starts, YYYY-MM-DD[THH:MM[:SS]] UTC (default: the world's "
+                       "start_time_s); a site's runs are told apart and ordered by it");
+  simulate
+      ->add_option("--litter-day", request->litter_day,
+                   "Survey the park on this day: the world's litter changed day by day "
+                   "(litter.daily_pickup_fraction picked up, litter.daily_new dropped)")
+      ->check(CLI::NonNegativeNumber);
   simulate->add_option("--contact-sheet", request->contact_sheet,
                        "Also write a PNG of sampled colour, depth and laser frames of the bag");
   simulate->callback([request, &context] {

@@ -18,6 +18,8 @@ struct SimulateRequest {
   std::optional<std::uint64_t> run_seed;
   std::string route;  // empty: the world's `route`
   std::optional<double> duration_s;
+  int litter_day = 0;
+  std::string start_time;  // a date (cli/date_argument.hpp); empty: the world's start_time_s
 };
 
 // Records the run, prints what was written to stdout. Throws littermap errors.

@@ -114,6 +114,7 @@ json WorldJson(const Simulation& simulation) {
   return {{"name", world.spec.name},
           {"seed", world.spec.seed},
           {"run_seed", world.spec.RunSeed()},
+          {"litter_day", world.spec.litter_day},
           {"route", world.spec.driven_route.empty() ? "route" : world.spec.driven_route},
           {"size_m", json::array({world.spec.size_x_m, world.spec.size_y_m})},
           {"frame", "world: x east, y north, z up; the robot starts at route[0]"},

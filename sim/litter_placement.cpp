@@ -188,24 +188,35 @@ void PlaceLitter(World& world) {
   }
   double total_weight = 0;
   for (double w : weights) total_weight += w;
-  const auto pick_hotspot = [&] {
-    double u = rng.Uniform(0, total_weight);
+  const auto pick_hotspot = [&](Rng& draw_rng) {
+    double u = draw_rng.Uniform(0, total_weight);
     for (std::size_t i = 0; i < hotspots.size(); ++i) {
       if ((u -= weights[i]) < 0) return hotspots[i];
     }
     return hotspots.back();
   };
-  for (const std::string& label : AllocateLabels(spec.class_weights, spec.count)) {
-    const bool clustered = !hotspots.empty() && rng.Bernoulli(spec.hotspot_fraction);
-    const Eigen::Vector2d center = clustered ? pick_hotspot() : Eigen::Vector2d::Zero();
-    PlaceSmall(world, rng, ObjectKind::kLitter, label, spec.half_hidden_fraction, [&] {
+  const auto drop = [&](Rng& draw_rng, const std::string& label) {
+    const bool clustered = !hotspots.empty() && draw_rng.Bernoulli(spec.hotspot_fraction);
+    const Eigen::Vector2d center = clustered ? pick_hotspot(draw_rng) : Eigen::Vector2d::Zero();
+    PlaceSmall(world, draw_rng, ObjectKind::kLitter, label, spec.half_hidden_fraction, [&] {
       if (clustered) {
-        return Eigen::Vector2d(center.x() + rng.Normal(0, spec.hotspot_sigma_m),
-                               center.y() + rng.Normal(0, spec.hotspot_sigma_m));
+        return Eigen::Vector2d(center.x() + draw_rng.Normal(0, spec.hotspot_sigma_m),
+                               center.y() + draw_rng.Normal(0, spec.hotspot_sigma_m));
       }
-      return Eigen::Vector2d(rng.Uniform(0, world.spec.size_x_m),
-                             rng.Uniform(0, world.spec.size_y_m));
+      return Eigen::Vector2d(draw_rng.Uniform(0, world.spec.size_x_m),
+                             draw_rng.Uniform(0, world.spec.size_y_m));
     });
+  };
+  for (const std::string& label : AllocateLabels(spec.class_weights, spec.count)) drop(rng, label);
+  // Later days: some litter picked up, some new dropped.
+  for (int day = 1; day <= world.spec.litter_day; ++day) {
+    Rng day_rng(world.spec.seed, 1000 + static_cast<std::uint64_t>(day));
+    std::erase_if(world.objects, [&](const WorldObject& o) {
+      return o.kind == ObjectKind::kLitter && day_rng.Bernoulli(spec.daily_pickup_fraction);
+    });
+    for (const std::string& label : AllocateLabels(spec.class_weights, spec.daily_new)) {
+      drop(day_rng, label);
+    }
   }
 }
 

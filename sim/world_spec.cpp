@@ -55,9 +55,15 @@ void ReadLitter(YamlFields fields, LitterSpec& litter) {
   fields.Read("hotspot_fraction", litter.hotspot_fraction);
   fields.Read("hotspot_sigma_m", litter.hotspot_sigma_m);
   fields.Read("half_hidden_fraction", litter.half_hidden_fraction);
+  fields.Read("daily_pickup_fraction", litter.daily_pickup_fraction);
+  fields.Read("daily_new", litter.daily_new);
   fields.Read("class_weights", litter.class_weights, kLitterClasses);
   Check(fields, "hotspot_fraction", litter.hotspot_fraction >= 0 && litter.hotspot_fraction <= 1,
         "must be in [0, 1]");
+  Check(fields, "daily_pickup_fraction",
+        litter.daily_pickup_fraction >= 0 && litter.daily_pickup_fraction <= 1,
+        "must be in [0, 1]");
+  Check(fields, "daily_new", litter.daily_new >= 0, "must be >= 0");
   fields.Finish();
 }
 

@@ -49,6 +49,10 @@ struct LitterSpec {
   double hotspot_fraction = 0.75;  // share placed around benches, bins and path edges
   double hotspot_sigma_m = 1.2;    // spread around a hotspot
   double half_hidden_fraction = 0.2;
+  // How the litter changes from day to day (WorldSpec::litter_day): each day park staff pick up
+  // this share of it and visitors drop daily_new items more, in the same hotspot pattern.
+  double daily_pickup_fraction = 0.3;
+  int daily_new = 10;
   // TACO-aligned classes; weights are normalised. Keys: can, bottle, cup, carton,
   // food_container, plastic_bag, other.
   std::map<std::string, double> class_weights = {
@@ -153,6 +157,9 @@ struct WorldSpec {
   // Seeds sensor noise, odometry drift and camera timing; none: `seed` does. The world itself
   // (terrain, objects) follows `seed` alone, so runs with different run seeds survey one park.
   std::optional<std::uint64_t> run_seed;
+  // The day of the survey: day 0 has the litter `seed` places, each later day the litter of the
+  // day before changed as `litter` says (deterministic in seed and day).
+  int litter_day = 0;
 
   std::uint64_t RunSeed() const { return run_seed.value_or(seed); }
   // The route the robot drives. Throws BadInputError naming the known routes for an unknown name.

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 
 #include "core/error.hpp"
@@ -84,6 +85,40 @@ TEST(World, TheRunSeedChangesTheSensorsNotThePark) {
   EXPECT_EQ(first.states().back().pose.x_m, second.states().back().pose.x_m);  // same drive
   EXPECT_NE(first.odometry().back().x_m, second.odometry().back().x_m);        // other drift
   EXPECT_NE(first.Scan(50).ranges_m, second.Scan(50).ranges_m);                // other noise
+}
+
+// Day by day some litter is picked up and new litter dropped; the rest stays where it was, and
+// nothing but litter changes.
+TEST(World, LitterChangesFromDayToDay) {
+  WorldSpec spec = LoadWorldSpec(SampleWorld());
+  const World day0 = GenerateWorld(spec);
+  spec.litter_day = 1;
+  const World day1 = GenerateWorld(spec);
+  spec.litter_day = 2;
+  const World day2 = GenerateWorld(spec);
+  const World day2_again = GenerateWorld(spec);
+  EXPECT_TRUE(SameObjects(day2, day2_again));
+
+  const auto litter = [](const World& world) {
+    std::vector<Eigen::Vector3d> centres;
+    for (const WorldObject& o : world.objects) {
+      if (o.kind == ObjectKind::kLitter) centres.push_back(o.center_m);
+    }
+    return centres;
+  };
+  const auto kept = [](const std::vector<Eigen::Vector3d>& before,
+                       const std::vector<Eigen::Vector3d>& after) {
+    return std::count_if(before.begin(), before.end(), [&](const Eigen::Vector3d& p) {
+      return std::find(after.begin(), after.end(), p) != after.end();
+    });
+  };
+  const auto litter0 = litter(day0), litter1 = litter(day1), litter2 = litter(day2);
+  // 60 items, 30 % picked up (binomial: 42 +- 3.6 kept), 10 new.
+  EXPECT_NEAR(static_cast<double>(kept(litter0, litter1)), 42.0, 11.0);
+  EXPECT_EQ(static_cast<std::ptrdiff_t>(litter1.size()), kept(litter0, litter1) + 10);
+  EXPECT_EQ(static_cast<std::ptrdiff_t>(litter2.size()), kept(litter1, litter2) + 10);
+  EXPECT_EQ(day1.Count(ObjectKind::kNatural), day0.Count(ObjectKind::kNatural));
+  EXPECT_EQ(day1.Count(ObjectKind::kTree), day0.Count(ObjectKind::kTree));
 }
 
 TEST(World, CountsAndClassMixMatchTheSpec) {
