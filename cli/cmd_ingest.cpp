@@ -9,11 +9,15 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <numbers>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "capture/tum_trajectory.hpp"
 #include "cli/cli_context.hpp"
@@ -152,6 +156,19 @@ heatmap::IngestResult PlaceAndIngest(const IngestArguments& arguments, db::SiteD
   }
 }
 
+// reconstruct's quality.json, checked to be JSON; empty when the run has none (a simulator truth
+// directory).
+std::string ReadQuality(const std::filesystem::path& file) {
+  if (!std::filesystem::exists(file)) return {};
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  if (!in || !nlohmann::json::accept(text.str())) {
+    throw BadInputError(file.string() + ": not a JSON file (reconstruct writes it; rerun it)");
+  }
+  return text.str();
+}
+
 void RunIngest(IngestArguments arguments, CliContext& context) {
   const std::filesystem::path run_dir = arguments.run_dir;
   const auto trajectory_file = run_dir / "trajectory.tum";
@@ -179,6 +196,7 @@ void RunIngest(IngestArguments arguments, CliContext& context) {
     run.end_time_s = ToSeconds(poses.back().stamp_ns);
   }
   run.items = heatmap::ReadRunItems(items_file);
+  run.reconstruction_quality = ReadQuality(run_dir / "quality.json");
   const heatmap::IngestResult result = PlaceAndIngest(arguments, site, run);
   if (result.already_ingested) {
     std::printf("Run %s is already in %s as run %lld; nothing changed\n", run.name.c_str(),

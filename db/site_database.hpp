@@ -44,6 +44,7 @@ struct RunRecord {
   PlanarPose T_site_run;                       // the run's map frame in the site frame
   std::optional<double> registration_quality;  // matching ratio; none: not matched (first run,
                                                // manual transform, or no map)
+  std::string reconstruction_quality;  // reconstruct's quality.json (JSON text); empty: unknown
 };
 
 // The occupancy map later runs are registered onto (reconstruct's map.pgm of the first run).
@@ -95,6 +96,9 @@ struct CoverageRecord {
   int height = 0;
   double observed_area_m2 = 0.0;
   std::vector<std::uint8_t> observed;  // row-major, 1 = observed
+
+  // Whether the run observed the ground at a point of the site CRS.
+  bool Covers(const PointXY& crs) const;
 };
 
 struct HotspotRecord {

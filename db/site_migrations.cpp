@@ -120,10 +120,17 @@ CREATE TABLE site_map (
 );
 )sql";
 
+// Version 3: how well each run was reconstructed (reconstruct's quality.json: routines used,
+// loop closures, warnings), kept verbatim so reports can show survey quality per run.
+constexpr const char* kVersion3 = R"sql(
+ALTER TABLE runs ADD COLUMN reconstruction_quality TEXT;
+)sql";
+
 const std::vector<Migration>& Migrations() {
   static const std::vector<Migration> migrations = {
       {1, "sites, runs, run_tracks, litter_items, detections, coverage, hotspots", kVersion1},
       {2, "site_map: the occupancy map later runs are registered onto", kVersion2},
+      {3, "runs.reconstruction_quality: reconstruct's quality.json of each run", kVersion3},
   };
   return migrations;
 }

@@ -29,8 +29,8 @@ std::optional<std::int64_t> SiteDatabase::FindRun(const std::string& source_dige
 std::int64_t SiteDatabase::AddRun(const RunRecord& run) {
   SqliteStatement insert = database_.Prepare(
       "INSERT INTO runs (site_id, name, source_digest, start_time_s, end_time_s, length_m, "
-      "site_from_run_x_m, site_from_run_y_m, site_from_run_yaw_rad, registration_quality) "
-      "VALUES (1, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+      "site_from_run_x_m, site_from_run_y_m, site_from_run_yaw_rad, registration_quality, "
+      "reconstruction_quality) VALUES (1, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
   insert.Bind(1, run.name);
   insert.Bind(2, run.source_digest);
   insert.BindReal(3, run.start_time_s);
@@ -44,6 +44,11 @@ std::int64_t SiteDatabase::AddRun(const RunRecord& run) {
   } else {
     insert.BindNull(9);
   }
+  if (run.reconstruction_quality.empty()) {
+    insert.BindNull(10);
+  } else {
+    insert.Bind(10, run.reconstruction_quality);
+  }
   insert.Run();
   return database_.LastInsertId();
 }
@@ -51,8 +56,8 @@ std::int64_t SiteDatabase::AddRun(const RunRecord& run) {
 std::vector<RunRecord> SiteDatabase::Runs() {
   SqliteStatement query = database_.Prepare(
       "SELECT run_id, name, source_digest, start_time_s, end_time_s, length_m, "
-      "site_from_run_x_m, site_from_run_y_m, site_from_run_yaw_rad, registration_quality "
-      "FROM runs ORDER BY run_id");
+      "site_from_run_x_m, site_from_run_y_m, site_from_run_yaw_rad, registration_quality, "
+      "reconstruction_quality FROM runs ORDER BY run_id");
   std::vector<RunRecord> runs;
   while (query.Step()) {
     RunRecord& run = runs.emplace_back();
@@ -64,8 +69,17 @@ std::vector<RunRecord> SiteDatabase::Runs() {
     run.length_m = query.ColumnDouble(5);
     run.T_site_run = {query.ColumnDouble(6), query.ColumnDouble(7), query.ColumnDouble(8)};
     if (!query.ColumnIsNull(9)) run.registration_quality = query.ColumnDouble(9);
+    if (!query.ColumnIsNull(10)) run.reconstruction_quality = query.ColumnText(10);
   }
   return runs;
+}
+
+bool CoverageRecord::Covers(const PointXY& crs) const {
+  const double column = std::floor((crs.x - min_x_m) / cell_size_m);
+  const double row = std::floor((max_y_m - crs.y) / cell_size_m);
+  if (!(column >= 0 && row >= 0 && column < width && row < height)) return false;
+  return observed[static_cast<std::size_t>(row) * static_cast<std::size_t>(width) +
+                  static_cast<std::size_t>(column)] != 0;
 }
 
 std::optional<std::uint8_t> SiteMapRecord::GreyAt(const PointXY& site_xy) const {

@@ -1,5 +1,6 @@
 #include "heatmap/run_ingest.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -13,8 +14,7 @@
 namespace littermap::heatmap {
 namespace {
 
-// Known items by coarse cell, to find the one an observation is (the same class, closest,
-// within the radius).
+// Known items by coarse cell, to find those within the radius of an observation.
 class ItemIndex {
  public:
   ItemIndex(std::vector<db::ItemRecord> items, double radius_m)
@@ -22,10 +22,16 @@ class ItemIndex {
     for (std::size_t i = 0; i < items_.size(); ++i)
       cells_[Key(items_[i].site_xy, 0, 0)].push_back(i);
   }
-  // The closest known item of the same class within the radius, not already taken.
-  std::optional<std::int64_t> Find(const RunItem& item, const std::set<std::int64_t>& taken) const {
-    std::optional<std::int64_t> best;
-    double best_d = radius_m_;
+
+  struct Candidate {
+    double distance_m;
+    std::size_t run_item;
+    std::int64_t fid;
+  };
+
+  // Every known item within the radius of the run's item.
+  void AddCandidates(const RunItem& item, std::size_t run_item,
+                     std::vector<Candidate>& candidates) const {
     for (int dx = -1; dx <= 1; ++dx) {
       for (int dy = -1; dy <= 1; ++dy) {
         const auto cell = cells_.find(Key(item.xy, dx, dy));
@@ -33,14 +39,10 @@ class ItemIndex {
         for (std::size_t i : cell->second) {
           const db::ItemRecord& known = items_[i];
           const double d = std::hypot(known.site_xy.x - item.xy.x, known.site_xy.y - item.xy.y);
-          if (known.class_name == item.class_name && d <= best_d && !taken.count(known.fid)) {
-            best_d = d;
-            best = known.fid;
-          }
+          if (d <= radius_m_) candidates.push_back({d, run_item, known.fid});
         }
       }
     }
-    return best;
   }
 
  private:
@@ -90,13 +92,6 @@ db::CoverageRecord Coverage(std::span<const PlanarPose> crs_poses, const IngestO
   return record;
 }
 
-bool Observed(const db::CoverageRecord& coverage, const db::PointXY& crs) {
-  const auto c = static_cast<int>(std::floor((crs.x - coverage.min_x_m) / coverage.cell_size_m));
-  const auto r = static_cast<int>(std::floor((coverage.max_y_m - crs.y) / coverage.cell_size_m));
-  if (c < 0 || r < 0 || c >= coverage.width || r >= coverage.height) return false;
-  return coverage.observed[static_cast<std::size_t>(r) * coverage.width + c] != 0;
-}
-
 double PathLength(std::span<const PlanarPose> poses) {
   double length = 0.0;
   for (std::size_t i = 1; i < poses.size(); ++i) {
@@ -105,20 +100,39 @@ double PathLength(std::span<const PlanarPose> poses) {
   return length;
 }
 
-// Items of this run are matched one-to-one against the items known before it: two items of one
-// run are two items (the detect stage has already fused its views), however close.
+// Items of this run are matched one-to-one against the items known before it, nearest pairs
+// first: two items of one run are two items (the detect stage has already fused its views),
+// however close. The class plays no part: the classifier may call one crumpled cup a carton in
+// another run, and litter stays where it lies; the site's item keeps the class it was first
+// found with, each detection keeps its own.
 void StoreItems(db::SiteDatabase& site, const RunInput& run, const IngestOptions& options,
                 const db::CoverageRecord& coverage, IngestResult& result) {
-  const ItemIndex known(site.Items(), options.same_item_radius_m);
-  std::set<std::int64_t> matched;
-  for (const RunItem& item : run.items) {
-    if (options.drop_unobserved_items && !Observed(coverage, site.site().frame.ToCrs(item.xy))) {
-      ++result.items_unobserved;
-      continue;
+  std::vector<bool> observed(run.items.size(), true);
+  if (options.drop_unobserved_items) {
+    for (std::size_t i = 0; i < run.items.size(); ++i) {
+      observed[i] = coverage.Covers(site.site().frame.ToCrs(run.items[i].xy));
+      result.items_unobserved += !observed[i];
     }
-    std::optional<std::int64_t> fid = known.Find(item, matched);
+  }
+  const ItemIndex known(site.Items(), options.same_item_radius_m);
+  std::vector<ItemIndex::Candidate> candidates;
+  for (std::size_t i = 0; i < run.items.size(); ++i) {
+    if (observed[i]) known.AddCandidates(run.items[i], i, candidates);
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const auto& a, const auto& b) { return a.distance_m < b.distance_m; });
+  std::vector<std::optional<std::int64_t>> match(run.items.size());
+  std::set<std::int64_t> taken;
+  for (const ItemIndex::Candidate& c : candidates) {
+    if (match[c.run_item] || taken.count(c.fid)) continue;
+    match[c.run_item] = c.fid;
+    taken.insert(c.fid);
+  }
+  for (std::size_t i = 0; i < run.items.size(); ++i) {
+    if (!observed[i]) continue;
+    const RunItem& item = run.items[i];
+    std::optional<std::int64_t> fid = match[i];
     if (fid) {
-      matched.insert(*fid);
       site.MarkItemSeen(*fid, result.run_id);
       ++result.items_seen_again;
     } else {
@@ -159,7 +173,8 @@ IngestResult IngestRun(db::SiteDatabase& site, const RunInput& run, const Ingest
       return;
     }
     result.run_id = site.AddRun({0, run.name, run.source_digest, run.start_time_s, run.end_time_s,
-                                 result.length_m, run.T_site_run, run.registration_quality});
+                                 result.length_m, run.T_site_run, run.registration_quality,
+                                 run.reconstruction_quality});
     if (run.site_map && site.SiteMap()) {
       throw SiteMapDefinedMeanwhile(site.sql().file().string() +
                                     ": another run defined the site map meanwhile");

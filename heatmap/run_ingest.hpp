@@ -1,9 +1,10 @@
 #pragma once
 // Adds one reconstructed run to a site database: the run, its track (run_tracks), the ground
-// its camera observed (coverage), its detections and the litter items they are. An item of the
-// same class within same_item_radius_m of a known item is that item seen again (litter stays
-// until picked up), so reports can tell new litter from old. Idempotent: a run whose inputs'
-// digest is already stored changes nothing. Everything is written in one transaction.
+// its camera observed (coverage), its detections and the litter items they are. An item within
+// same_item_radius_m of a known item is that item seen again (litter stays until picked up),
+// whatever class this run's classifier gave it, so reports can tell new litter from old.
+// Idempotent: a run whose inputs' digest is already stored changes nothing. Everything is written
+// in one transaction.
 //
 // Registration (placing the run's map frame in the site frame) happens before: RunInput is in
 // the site frame already and records the transform used.
@@ -27,7 +28,9 @@ namespace littermap::heatmap {
 struct IngestOptions {
   CameraFootprintOptions camera;
   double coverage_cell_size_m = 0.5;
-  double same_item_radius_m = 0.5;
+  // Two runs' placements of one item differ by both runs' trajectory errors and the
+  // registration's: up to ~0.5 m each on the sample park (see issue notes on SLAM accuracy).
+  double same_item_radius_m = 0.75;
   // Keep only items inside the run's camera coverage: for the simulator's truth, which lists
   // every item of the world, seen or not.
   bool drop_unobserved_items = false;
@@ -43,6 +46,7 @@ struct RunInput {
   PlanarPose T_site_run;                // how the run's map frame was placed in the site
   std::optional<double> registration_quality;
   std::optional<db::SiteMapRecord> site_map;  // the first run with a map defines the site map
+  std::string reconstruction_quality;         // reconstruct's quality.json, if there is one
 };
 
 struct IngestResult {

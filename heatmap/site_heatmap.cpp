@@ -45,6 +45,10 @@ SiteHeatmap ComputeSiteHeatmap(db::SiteDatabase& site, const SiteHeatmapOptions&
   for (const db::RunRecord& run : site.Runs()) {
     if (options.from_time_s && run.start_time_s < *options.from_time_s) continue;
     if (options.to_time_s && run.start_time_s >= *options.to_time_s) continue;
+    if (!options.run_ids.empty() && std::find(options.run_ids.begin(), options.run_ids.end(),
+                                              run.run_id) == options.run_ids.end()) {
+      continue;
+    }
     selected.insert(run.run_id);
   }
   std::vector<db::CoverageRecord> coverages = site.Coverages();

@@ -23,6 +23,7 @@ struct SiteHeatmapOptions {
   std::string class_name;             // empty: every class
   std::optional<double> from_time_s;  // runs starting at or after (Unix seconds)
   std::optional<double> to_time_s;    // runs starting before
+  std::vector<std::int64_t> run_ids;  // only these runs; empty: every run in the period
 };
 
 struct SiteHeatmap {

@@ -97,12 +97,14 @@ TEST(SiteDatabase, ReopensWithRecordsAndGeometryInTheSiteCrs) {
   {
     SiteDatabase site = SiteDatabase::Create(file, Options("p", 32633, 500000, 5000000, 30));
     site.InTransaction([&] {
-      const std::int64_t run = site.AddRun({0, "run1", "digest-1", 0, 900, 120, {}, std::nullopt});
+      const std::int64_t run =
+          site.AddRun({0, "run1", "digest-1", 0, 900, 120, {}, std::nullopt, {}});
       const std::vector<PointXY> track = {{0, 0}, {3, 4}, {3, 10}};
       site.AddRunTrack(run, track);
       site.AddItem({0, "bottle", {3, 4}, 0.05, 0.2, 0.9, run, run, 1});
     });
-    EXPECT_THROW(site.AddRun({0, "again", "digest-1", 0, 1, 1, {}, std::nullopt}), SqliteError);  // unique digest
+    EXPECT_THROW(site.AddRun({0, "again", "digest-1", 0, 1, 1, {}, std::nullopt, {}}),
+                 SqliteError);  // unique digest
   }
   SiteDatabase site = SiteDatabase::Open(file);
   EXPECT_EQ(site.site().frame.epsg_code, 32633);
@@ -198,8 +200,8 @@ TEST(SiteDatabase, KeepsTheSiteMapAndWhereEachRunWasPlaced) {
   const auto file = dir / "park.gpkg";
   {
     SiteDatabase site = SiteDatabase::Create(file, Options("p"));
-    RunRecord first{0, "first", "digest-1", 0, 10, 5, {}, std::nullopt};
-    RunRecord second{0, "second", "digest-2", 20, 30, 5, {1.5, -2.0, 0.25}, 0.87};
+    RunRecord first{0, "first", "digest-1", 0, 10, 5, {}, std::nullopt, {}};
+    RunRecord second{0, "second", "digest-2", 20, 30, 5, {1.5, -2.0, 0.25}, 0.87, {}};
     const std::int64_t first_id = site.AddRun(first);
     site.AddRun(second);
     EXPECT_FALSE(site.SiteMap());
@@ -233,18 +235,22 @@ TEST(SiteDatabase, KeepsTheSiteMapAndWhereEachRunWasPlaced) {
   EXPECT_EQ(map->pixels, (std::vector<std::uint8_t>{0, 254, 205, 205, 0, 254}));
 }
 
-TEST(SiteDatabase, AVersionOneSiteGainsTheSiteMapTableOnOpen) {
+TEST(SiteDatabase, AVersionOneSiteIsMigratedOnOpen) {
   TempDir dir;
   const auto file = dir / "park.gpkg";
   {
     SiteDatabase site = SiteDatabase::Create(file, Options("p"));
     site.sql().Execute("DROP TABLE site_map");
-    site.sql().Execute("DELETE FROM littermap_schema_version WHERE version = 2");
+    site.sql().Execute("ALTER TABLE runs DROP COLUMN reconstruction_quality");
+    site.sql().Execute("DELETE FROM littermap_schema_version WHERE version > 1");
   }
   SiteDatabase site = SiteDatabase::Open(file);
-  EXPECT_EQ(site.site().schema_version, 2);
+  EXPECT_EQ(site.site().schema_version, 3);
   EXPECT_TRUE(site.sql().HasTable("site_map"));
   EXPECT_FALSE(site.SiteMap());
+  RunRecord run{0, "r", "digest", 1, 2, 3, {}, std::nullopt, R"({"key_frames": 5})"};
+  site.AddRun(run);
+  EXPECT_EQ(site.Runs().at(0).reconstruction_quality, run.reconstruction_quality);
 }
 
 }  // namespace

@@ -71,19 +71,41 @@ TEST_F(RunIngestTest, AnItemSeenAgainIsTheSameItem) {
   RunInput a = EastRun("run-a", 1000.0);
   a.items = {Item("1", "can", 10.0, 11.0)};
   RunInput b = EastRun("run-b", 2000.0);
-  b.items = {Item("7", "can", 10.2, 11.1),     // the same can, 0.22 m off
-             Item("8", "bottle", 10.0, 11.0),  // another class at the same place: new
+  b.items = {Item("7", "carton", 10.2, 11.1),  // the can, 0.22 m off, classified otherwise
              Item("9", "can", 25.0, 11.0)};    // a new can
   IngestRun(site, a, {});
   const IngestResult result = IngestRun(site, b, {});
   EXPECT_EQ(result.items_seen_again, 1u);
-  EXPECT_EQ(result.new_items, 2u);
+  EXPECT_EQ(result.new_items, 1u);
   const auto items = site.Items();
-  ASSERT_EQ(items.size(), 3u);
+  ASSERT_EQ(items.size(), 2u);
   EXPECT_EQ(items[0].times_seen, 2);
   EXPECT_EQ(items[0].first_run_id, 1);
   EXPECT_EQ(items[0].last_run_id, 2);
+  EXPECT_EQ(items[0].class_name, "can");  // the item keeps its first class ...
+  const auto detections = site.Detections({2});
+  ASSERT_EQ(detections.size(), 2u);
+  EXPECT_EQ(detections[0].class_name, "carton");  // ... each detection its own
   EXPECT_EQ(items[1].times_seen, 1);
+}
+
+TEST_F(RunIngestTest, NearestPairsMatchFirst) {
+  db::SiteDatabase site = Site();
+  RunInput a = EastRun("run-a", 1000.0);
+  a.items = {Item("1", "can", 10.0, 11.0), Item("2", "can", 10.6, 11.0)};
+  IngestRun(site, a, {});
+  // The first item of run b is 0.4 m from can 1 and 0.2 m from can 2; the second lies on can 2.
+  // In run order the first would take can 2 and leave the second can 1, 0.6 m off; nearest
+  // pairs first, each takes the can it lies on or nearest to.
+  RunInput b = EastRun("run-b", 2000.0);
+  b.items = {Item("1", "can", 10.4, 11.0), Item("2", "can", 10.6, 11.0)};
+  const IngestResult result = IngestRun(site, b, {});
+  EXPECT_EQ(result.items_seen_again, 2u);
+  EXPECT_EQ(result.new_items, 0u);
+  const auto detections = site.Detections({2});
+  ASSERT_EQ(detections.size(), 2u);
+  EXPECT_EQ(*detections[0].item_fid, 1);
+  EXPECT_EQ(*detections[1].item_fid, 2);
 }
 
 TEST_F(RunIngestTest, CloseItemsOfOneRunStayTwoItems) {
