@@ -13,7 +13,16 @@ CLI::App* CliContext::AddCommand(CLI::App& parent, const std::string& name,
 
 ProgressCallback CliContext::Progress() {
   if (quiet) return {};
-  return [this](const littermap::Progress& progress) { display_.Update(progress); };
+  return [this](const littermap::Progress& progress) {
+    if (task_prefix.empty()) {
+      display_.Update(progress);
+      return;
+    }
+    const std::string task = task_prefix + std::string(progress.task);
+    littermap::Progress prefixed = progress;
+    prefixed.task = task;
+    display_.Update(prefixed);
+  };
 }
 
 void CliContext::Warn(const std::string& message) const {

@@ -16,6 +16,7 @@ class CliContext {
  public:
   bool quiet = false;
   std::function<void()> run;  // set by the callback of the subcommand that was given
+  std::string task_prefix;    // put before every progress task, e.g. "[2/5 detect] "
 
   // Adds a subcommand that also accepts the global flags (--quiet) after its name.
   CLI::App* AddCommand(CLI::App& parent, const std::string& name, const std::string& description);
@@ -33,12 +34,13 @@ void RegisterInfoCommand(CLI::App& app, CliContext& context);
 void RegisterImportCommands(CLI::App& app, CliContext& context);
 void RegisterSimulateCommand(CLI::App& app, CliContext& context);
 void RegisterCaptureCommand(CLI::App& app, CliContext& context);
-void RegisterPendingCommands(CLI::App& app, CliContext& context);
 void RegisterReconstructCommand(CLI::App& app, CliContext& context);
 void RegisterEvalCommands(CLI::App& app, CliContext& context);
 void RegisterSiteCommands(CLI::App& app, CliContext& context);
 void RegisterIngestCommand(CLI::App& app, CliContext& context);
 void RegisterHeatmapCommand(CLI::App& app, CliContext& context);
+void RegisterReportCommand(CLI::App& app, CliContext& context);
+void RegisterSurveyCommand(CLI::App& app, CliContext& context);
 void RegisterDetectCommand(CLI::App& app, CliContext& context);
 void RegisterTrainCommands(CLI::App& app, CliContext& context);
 // Adds `eval segmentation` to the `eval` command; call after RegisterEvalCommands.

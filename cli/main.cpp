@@ -43,7 +43,8 @@ int main(int argc, char** argv) {
   littermap::cli::RegisterSiteCommands(app, context);
   littermap::cli::RegisterIngestCommand(app, context);
   littermap::cli::RegisterHeatmapCommand(app, context);
-  littermap::cli::RegisterPendingCommands(app, context);
+  littermap::cli::RegisterReportCommand(app, context);
+  littermap::cli::RegisterSurveyCommand(app, context);
 
   try {
     app.parse(argc, argv);

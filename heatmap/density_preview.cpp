@@ -117,17 +117,30 @@ void DrawLegend(cv::Mat& canvas, int x0, int map_height, float peak, const std::
 
 }  // namespace
 
+DensityImage RenderDensityImage(const Raster& density, float nodata,
+                                const DensityPreviewOptions& options) {
+  if (density.grid.width <= 0 || density.grid.height <= 0) {
+    throw UsageError("density map: nothing to draw (empty raster)");
+  }
+  DensityImage image;
+  image.peak = PeakOf(density, nodata);
+  image.pixels_per_cell =
+      std::max(1, options.max_size_px / std::max(density.grid.width, density.grid.height));
+  const double scale = image.pixels_per_cell;
+  cv::resize(ColourMap(density, nodata, image.peak), image.bgr, {}, scale, scale,
+             cv::INTER_NEAREST);
+  if (options.occupancy) DrawOccupancy(image.bgr, density.grid, scale, options);
+  return image;
+}
+
 void WriteDensityPreview(const std::filesystem::path& file, const Raster& density, float nodata,
                          const DensityPreviewOptions& options) {
   if (density.grid.width <= 0 || density.grid.height <= 0) {
     throw UsageError(file.string() + ": nothing to draw (empty raster)");
   }
-  const float peak = PeakOf(density, nodata);
-  const double scale = std::max(1.0, std::floor(static_cast<double>(options.max_size_px) /
-                                                std::max(density.grid.width, density.grid.height)));
-  cv::Mat map;
-  cv::resize(ColourMap(density, nodata, peak), map, {}, scale, scale, cv::INTER_NEAREST);
-  if (options.occupancy) DrawOccupancy(map, density.grid, scale, options);
+  const DensityImage image = RenderDensityImage(density, nodata, options);
+  const cv::Mat& map = image.bgr;
+  const float peak = image.peak;
   const int height = std::max(map.rows, 420) + kTitleHeightPx;
   cv::Mat canvas(height, map.cols + kLegendWidthPx, CV_8UC3, cv::Scalar(255, 255, 255));
   map.copyTo(canvas(cv::Rect(0, kTitleHeightPx, map.cols, map.rows)));

@@ -9,6 +9,8 @@
 #include <optional>
 #include <string>
 
+#include <opencv2/core.hpp>
+
 #include "heatmap/raster.hpp"
 
 namespace littermap::heatmap {
@@ -22,6 +24,18 @@ struct DensityPreviewOptions {
   std::function<std::optional<std::uint8_t>(double x_m, double y_m)> occupancy;
   double occupancy_cell_size_m = 0.05;  // the map's resolution: thin walls are not skipped
 };
+
+// The map part of the preview, north up: `pixels_per_cell` pixels a raster cell, the colour
+// scale running from 0 to `peak`.
+struct DensityImage {
+  cv::Mat bgr;
+  int pixels_per_cell = 1;
+  float peak = 1.0f;
+};
+
+// Throws UsageError for an empty raster.
+DensityImage RenderDensityImage(const Raster& density, float nodata,
+                                const DensityPreviewOptions& options);
 
 // Throws UsageError when the file cannot be written.
 void WriteDensityPreview(const std::filesystem::path& file, const Raster& density, float nodata,

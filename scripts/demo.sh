@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Runs the furthest littermap stages that exist on the samples and says where the results are:
-# a simulated survey of samples/worlds/park_small.yaml and the real Intel Research Lab laser log,
-# each recorded into a run bag, reconstructed, and scored against its ground truth; litter is
-# detected in the park run's camera frames, scored, and goes into a site database and a density
-# map.
+# Runs littermap end to end on the samples and says where the results are: three weekly survey
+# runs of the simulated sample park (samples/worlds/park_small.yaml; the litter changes between
+# weeks) go through `littermap survey` into one site database and one HTML report, the first
+# run scored against the simulator's ground truth; then the real Intel Research Lab laser log is
+# reconstructed and scored.
 #   scripts/demo.sh LITTERMAP_BINARY OUT_DIR
 set -euo pipefail
 littermap=$1
@@ -23,28 +23,27 @@ mkdir -p "$out/park_small" "$out/intel"
 
 step() { echo; echo "== $*"; }
 
-step "simulating a survey of the sample park ($world)"
-"$littermap" simulate "$world" -o "$out/park_small/bag" --truth "$out/park_small/truth" \
-  --contact-sheet "$out/park_small/contact_sheet.png"
-step "reconstructing the simulated run"
-"$littermap" reconstruct "$out/park_small/bag" -o "$out/park_small/run"
-step "trajectory error against the simulator's ground truth"
-"$littermap" eval trajectory "$out/park_small/run/trajectory.tum" \
-  "$out/park_small/truth/trajectory.tum"
+park="$out/park_small"
+site="$park/site.gpkg"
+# An example georeference, so the report shows GPS coordinates: the park's south-west corner
+# dock at UTM zone 32N (EPSG:32632) 691000 E, 5334000 N, in Munich.
+"$littermap" site init "$site" --name "Sample park" --crs EPSG:32632 --origin 691000 5334000
+for week in 1 2 3; do
+  day=$(printf '%02d' $((1 + 7 * (week - 1))))
+  step "week $week: simulating a survey of the sample park on 2026-11-$day"
+  "$littermap" simulate "$world" -o "$park/week$week/bag" --truth "$park/week$week/truth" \
+    --run-seed "$week" --litter-day $((week - 1)) --start-time "2026-11-${day}T09:00"
+  step "week $week: littermap survey (reconstruct, detect, ingest, heatmap, report)"
+  "$littermap" survey "$park/week$week/bag" --site "$site" -o "$park/week$week" \
+    --name "week $week" --every 2
+done
 
-step "detecting litter in the simulated run's RGB-D frames"
-"$littermap" detect "$out/park_small/bag" --run "$out/park_small/run" \
-  --debug-frames "$out/park_small/run/segmentation"
-step "detected litter items against the simulator's ground truth"
-echo "(items are placed with the reconstructed trajectory: its error above moves them too)"
-"$littermap" eval detections "$out/park_small/run/items.csv" "$out/park_small/truth/litter.csv" \
-  --natural "$out/park_small/truth/natural.csv" --visible "$out/park_small/truth/masks/visible.csv" \
-  --align "$out/park_small/run/trajectory.tum" "$out/park_small/truth/trajectory.tum"
-
-step "site database and litter density map of the sample park"
-"$littermap" site init "$out/park_small/site.gpkg" --name "park_small"
-"$littermap" ingest "$out/park_small/site.gpkg" "$out/park_small/run" --name park_small-seed7
-"$littermap" heatmap "$out/park_small/site.gpkg" -o "$out/park_small/maps"
+step "week 1 against the simulator's ground truth: trajectory, then litter items"
+echo "(items are placed with the reconstructed trajectory: its error moves them too)"
+"$littermap" eval trajectory "$park/week1/run/trajectory.tum" "$park/week1/truth/trajectory.tum"
+"$littermap" eval detections "$park/week1/run/items.csv" "$park/week1/truth/litter.csv" \
+  --natural "$park/week1/truth/natural.csv" --visible "$park/week1/truth/masks/visible.csv" \
+  --align "$park/week1/run/trajectory.tum" "$park/week1/truth/trajectory.tum"
 
 step "importing the Intel Research Lab laser log (real data, corrupted odometry, seed 1)"
 "$littermap" import carmen "$intel" -o "$out/intel/bag" --reference "$out/intel/reference.tum" \
@@ -56,14 +55,11 @@ step "trajectory error against the log's corrected poses"
 
 step "results"
 cat <<EOF
-simulated park: bag $out/park_small/bag, ground truth $out/park_small/truth,
-                map $out/park_small/run/map.png, trajectory $out/park_small/run/trajectory.tum,
-                contact sheet $out/park_small/contact_sheet.png,
-                litter items $out/park_small/run/items.csv (detections.csv per frame,
-                segmentation pictures in $out/park_small/run/segmentation/),
-                site database $out/park_small/site.gpkg (a GeoPackage),
-                density $out/park_small/maps/density.tif and density.png, hotspots.csv
-Intel lab:      bag $out/intel/bag, map $out/intel/run/map.png,
-                trajectory $out/intel/run/trajectory.tum
-(the HTML report extends this demo when it lands)
+sample park:  site database $site (a GeoPackage: open it in QGIS),
+              per week in $park/weekN/: bag/, truth/, run/ (map.png, trajectory.tum,
+              items.csv), maps/ (density.tif, effort.tif, density.png, hotspots.csv, items.geojson)
+Intel lab:    bag $out/intel/bag, map $out/intel/run/map.png,
+              trajectory $out/intel/run/trajectory.tum
+
+The report for park staff: $park/week3/report/index.html
 EOF

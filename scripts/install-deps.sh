@@ -10,6 +10,7 @@ packages=(
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libbenchmark-dev libceres-dev libnanoflann-dev
   libproj-dev libtiff-dev libgeotiff-dev libpcl-dev
+  python3 chromium
 )
 if [[ "${1:-}" == "--ci" ]]; then
   packages+=(clang libclang-rt-14-dev)

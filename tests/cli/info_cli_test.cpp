@@ -1,4 +1,4 @@
-// `littermap info` and the CLI's contract: exit codes, --version, --help, pending stages.
+// `littermap info` and the CLI's contract: exit codes, --version, --help.
 
 #include <gtest/gtest.h>
 
@@ -88,14 +88,6 @@ TEST(Cli, VersionAndHelpExitZero) {
     const auto help = RunLittermap(std::string(command) + "--help");
     EXPECT_EQ(help.exit_code, 0) << command;
     EXPECT_NE(help.output.find("Usage:"), std::string::npos) << command;
-  }
-}
-
-TEST(Cli, StagesNotBuiltYetSaySoAndExitOne) {
-  for (const char* command : {"report site.gpkg -o out", "survey bag --site s.gpkg"}) {
-    const auto result = RunLittermap(command);
-    EXPECT_EQ(result.exit_code, 1) << command;
-    EXPECT_NE(result.output.find("not available"), std::string::npos) << result.output;
   }
 }
 

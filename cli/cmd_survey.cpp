@@ -1,0 +1,261 @@
+// littermap survey BAG --site SITE.gpkg [-o OUT] [--force]: the main job in one command.
+// reconstruct -> detect -> ingest -> heatmap -> report, each stage exactly the subcommand of the
+// same name, into
+//   OUT/run/      trajectory, map, quality, items and detections of the run
+//   OUT/maps/     density and effort GeoTIFFs, density.png, hotspots and items as CSV/GeoJSON
+//   OUT/report/   index.html and report.json of the whole site
+// Resumable: reconstruct and detect are skipped when they finished before and their outputs
+// are newer than their inputs (OUT/.stages/STAGE.done marks a finished stage, so a stage cut
+// short is redone). Ingest is idempotent; heatmap and report always run, as other runs may have
+// reached the site since. A failing stage is named and the earlier stages' outputs stay.
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cli/cli_context.hpp"
+#include "cli/report_command.hpp"
+#include "core/error.hpp"
+#include "db/site_database.hpp"
+#include "heatmap/run_ingest.hpp"
+#include "reports/class_palette.hpp"
+#include "reports/report_files.hpp"
+
+namespace littermap::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct SurveyArguments {
+  std::string bag;
+  std::string site;
+  std::string output;
+  std::string name;
+  std::string model;
+  int every = 0;  // 0: detect's default
+  bool force = false;
+};
+
+struct Stage {
+  std::string name;
+  std::vector<fs::path> inputs;
+  std::vector<fs::path> outputs;  // empty: the stage always runs
+  std::function<void()> run;
+};
+
+std::vector<fs::path> FilesIn(const fs::path& dir) {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    if (entry.is_regular_file()) files.push_back(entry.path());
+  }
+  return files;
+}
+
+// Finished before, every output there, none of the inputs changed since.
+bool UpToDate(const Stage& stage, const fs::path& marker) {
+  if (stage.outputs.empty() || !fs::exists(marker)) return false;
+  const auto finished = fs::last_write_time(marker);
+  for (const fs::path& output : stage.outputs) {
+    if (!fs::exists(output) || fs::last_write_time(output) > finished) return false;
+  }
+  return std::all_of(stage.inputs.begin(), stage.inputs.end(), [&](const fs::path& input) {
+    return fs::exists(input) && fs::last_write_time(input) <= finished;
+  });
+}
+
+// Runs a littermap subcommand in this process, as if it had been given on the command line.
+void RunSubcommand(CliContext& context, void (*register_command)(CLI::App&, CliContext&),
+                   std::vector<std::string> arguments) {
+  CLI::App app;
+  register_command(app, context);
+  std::reverse(arguments.begin(), arguments.end());  // CLI11 takes them last first
+  try {
+    app.parse(arguments);
+  } catch (const CLI::ParseError& e) {
+    throw InternalError(std::string("survey: cannot pass arguments on: ") + e.what());
+  }
+  std::function<void()> run = std::move(context.run);
+  context.run = nullptr;
+  run();
+}
+
+db::SiteDatabase OpenOrCreateSite(const SurveyArguments& arguments) {
+  if (fs::exists(arguments.site)) return db::SiteDatabase::Open(arguments.site);
+  db::SiteOptions options;
+  options.name = fs::path(arguments.site).stem().string();
+  db::SiteDatabase site = db::SiteDatabase::Create(arguments.site, options);
+  std::printf(
+      "Created site '%s' in %s: local frame, positions in metres from the dock (for GPS "
+      "coordinates create the site first with 'littermap site init --crs')\n",
+      options.name.c_str(), arguments.site.c_str());
+  return site;
+}
+
+// The run must not already be in the site with other results under the same name: the site
+// would count its litter twice.
+void CheckNotIngestedDifferently(const SurveyArguments& arguments, const fs::path& run_dir,
+                                 const std::string& name) {
+  db::SiteDatabase site = db::SiteDatabase::Open(arguments.site);
+  const fs::path files[] = {run_dir / "trajectory.tum", run_dir / "items.csv"};
+  const std::string digest = heatmap::DigestFiles(files);
+  for (const db::RunRecord& run : site.Runs()) {
+    if (run.name == name && run.source_digest != digest) {
+      throw BadInputError(arguments.site + ": already holds a run named '" + name +
+                          "' with other results (run " + std::to_string(run.run_id) +
+                          "); the site keeps it. To add these results as another run, give "
+                          "--name");
+    }
+  }
+}
+
+void PrintSummary(const reports::SiteReport& report, const std::string& name,
+                  const fs::path& report_dir) {
+  const auto run = std::find_if(report.runs.begin(), report.runs.end(),
+                                [&](const reports::RunFigures& r) { return r.name == name; });
+  std::printf("\nSurvey '%s' done.\n", name.c_str());
+  if (run != report.runs.end()) {
+    std::printf("  driven %.0f m, ground surveyed %.0f m2 (%.0f %% of the site's)\n", run->length_m,
+                run->observed_area_m2, 100 * run->coverage_fraction);
+    std::string classes;
+    for (const auto& [class_name, count] : run->items_by_class) {
+      classes += (classes.empty() ? "" : ", ") + std::to_string(count) + " " +
+                 reports::StyleOf(class_name).label;
+    }
+    std::printf("  litter found: %zu items%s%s%s\n", run->items_found, classes.empty() ? "" : " (",
+                classes.c_str(), classes.empty() ? "" : ")");
+    std::printf("  %zu new, %zu still there from earlier runs, %zu gone since\n", run->new_items,
+                run->items_still_there, run->items_gone);
+    for (const std::string& warning : run->warnings) std::printf("  note: %s\n", warning.c_str());
+  }
+  std::printf("  site '%s': %zu %s, %zu litter items\n", report.site_name.c_str(),
+              report.runs.size(), report.runs.size() == 1 ? "run" : "runs", report.items);
+  for (std::size_t i = 0; i < std::min<std::size_t>(3, report.hotspots.size()); ++i) {
+    const reports::HotspotFigures& h = report.hotspots[i];
+    std::printf(
+        "  hotspot %d: %.1f m east, %.1f m north of the dock, %.1f items per 100 m2, "
+        "mostly %s\n",
+        h.rank, h.site_xy.x, h.site_xy.y, h.density_per_100m2,
+        reports::StyleOf(h.dominant_class).label.c_str());
+  }
+  std::printf("Report: %s\n", (report_dir / "index.html").c_str());
+}
+
+void RunSurvey(const SurveyArguments& arguments, CliContext& context) {
+  const fs::path bag = arguments.bag;
+  if (!fs::is_directory(bag)) throw UsageError(arguments.bag + ": not a run bag directory");
+  const std::string name = arguments.name.empty()
+                               ? fs::absolute(bag).lexically_normal().filename().string()
+                               : arguments.name;
+  const fs::path out =
+      arguments.output.empty() ? fs::path(name + "-survey") : fs::path(arguments.output);
+  const fs::path run_dir = out / "run", maps_dir = out / "maps", report_dir = out / "report";
+  const fs::path stages_dir = out / ".stages";
+  fs::create_directories(stages_dir);
+  OpenOrCreateSite(arguments);  // before any long stage: a bad site fails fast
+
+  const std::vector<fs::path> bag_files = FilesIn(bag);
+  const std::string model = arguments.model.empty() ? LITTERMAP_DEFAULT_MODEL : arguments.model;
+  std::vector<fs::path> detect_inputs = bag_files;
+  detect_inputs.push_back(run_dir / "trajectory.tum");
+  detect_inputs.push_back(model);
+  std::vector<std::string> detect_arguments = {"detect",         bag.string(), "--run",
+                                               run_dir.string(), "--model",    model};
+  if (arguments.every > 0) {
+    detect_arguments.insert(detect_arguments.end(), {"--every", std::to_string(arguments.every)});
+  }
+  reports::SiteReport report;
+  const std::vector<Stage> stages = {
+      {"reconstruct",
+       bag_files,
+       {run_dir / "trajectory.tum", run_dir / "map.yaml", run_dir / "map.pgm",
+        run_dir / "quality.json"},
+       [&] {
+         RunSubcommand(context, RegisterReconstructCommand,
+                       {"reconstruct", bag.string(), "-o", run_dir.string()});
+       }},
+      {"detect",
+       detect_inputs,
+       {run_dir / "items.csv", run_dir / "detections.csv"},
+       [&] { RunSubcommand(context, RegisterDetectCommand, detect_arguments); }},
+      {"ingest",
+       {},
+       {},
+       [&] {
+         CheckNotIngestedDifferently(arguments, run_dir, name);
+         RunSubcommand(context, RegisterIngestCommand,
+                       {"ingest", arguments.site, run_dir.string(), "--name", name});
+       }},
+      {"heatmap",
+       {},
+       {},
+       [&] {
+         RunSubcommand(context, RegisterHeatmapCommand,
+                       {"heatmap", arguments.site, "-o", maps_dir.string()});
+       }},
+      {"report",
+       {},
+       {},
+       [&] {
+         db::SiteDatabase site = db::SiteDatabase::Open(arguments.site);
+         report = reports::WriteReportFiles(site, report_dir, DefaultReportOptions());
+         std::printf("wrote %s and report.json\n", (report_dir / "index.html").c_str());
+       }},
+  };
+
+  for (std::size_t i = 0; i < stages.size(); ++i) {
+    const Stage& stage = stages[i];
+    const std::string label =
+        "[" + std::to_string(i + 1) + "/" + std::to_string(stages.size()) + " " + stage.name + "]";
+    const fs::path marker = stages_dir / (stage.name + ".done");
+    if (!arguments.force && UpToDate(stage, marker)) {
+      std::printf("%s up to date (outputs newer than inputs), skipped; --force redoes it\n",
+                  label.c_str());
+      continue;
+    }
+    std::printf("%s\n", label.c_str());
+    std::fflush(stdout);
+    fs::remove(marker);
+    context.task_prefix = label + " ";
+    try {
+      stage.run();
+    } catch (const Error& e) {
+      context.task_prefix.clear();
+      throw Error(e.kind(), "survey stage '" + stage.name + "' failed: " + e.what() +
+                                "\n  the earlier stages' outputs are kept in " + out.string() +
+                                "; once fixed, the same command resumes at this stage");
+    }
+    context.FinishProgress();
+    context.task_prefix.clear();
+    std::ofstream(marker) << stage.name << " finished\n";
+  }
+  PrintSummary(report, name, report_dir);
+}
+
+}  // namespace
+
+void RegisterSurveyCommand(CLI::App& app, CliContext& context) {
+  auto arguments = std::make_shared<SurveyArguments>();
+  CLI::App* command = context.AddCommand(
+      app, "survey",
+      "Reconstruct, detect, ingest, heatmap and report in one go, resuming where it stopped");
+  command->add_option("BAG", arguments->bag, "Run bag directory")->required();
+  command->add_option("--site", arguments->site, "Site database (created when missing)")
+      ->required();
+  command->add_option("-o,--output", arguments->output,
+                      "Output directory (default: NAME-survey in the current directory)");
+  command->add_option("--name", arguments->name, "Run name (default: the bag directory's name)");
+  command->add_option("--model", arguments->model, "Classifier model (default: the built-in one)");
+  command->add_option("--every", arguments->every, "Detect in every n-th camera frame only")
+      ->check(CLI::PositiveNumber);
+  command->add_flag("--force", arguments->force, "Redo every stage, even if up to date");
+  command->callback([arguments, &context] {
+    context.run = [arguments, &context] { RunSurvey(*arguments, context); };
+  });
+}
+
+}  // namespace littermap::cli

@@ -1,0 +1,135 @@
+#include "reports/site_map_figure.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "core/error.hpp"
+#include "heatmap/density_preview.hpp"
+#include "reports/class_palette.hpp"
+
+namespace littermap::reports {
+namespace {
+
+const cv::Scalar kInk(30, 30, 30);
+const cv::Scalar kWhite(255, 255, 255);
+
+struct PixelMapping {
+  const heatmap::GridGeometry* grid;
+  double pixels_per_m;
+  cv::Point operator()(const db::PointXY& crs) const {
+    return {static_cast<int>(std::lround((crs.x - grid->min_x_m) * pixels_per_m)),
+            static_cast<int>(std::lround((grid->max_y_m - crs.y) * pixels_per_m))};
+  }
+};
+
+// A bar of 1, 2 or 5 times a power of ten metres, about a fifth of the map wide.
+void DrawScaleBar(cv::Mat& image, double pixels_per_m) {
+  const double wanted_m = image.cols / 5.0 / pixels_per_m;
+  const double power = std::pow(10.0, std::floor(std::log10(wanted_m)));
+  double length_m = power;
+  for (const double step : {2.0, 5.0, 10.0}) {
+    if (step * power <= wanted_m) length_m = step * power;
+  }
+  const int length_px = static_cast<int>(std::lround(length_m * pixels_per_m));
+  const cv::Point left(14, image.rows - 16);
+  cv::rectangle(image, left + cv::Point(-8, -30), left + cv::Point(length_px + 8, 8), kWhite,
+                cv::FILLED);
+  cv::rectangle(image, left + cv::Point(0, -6), left + cv::Point(length_px / 2, 0), kInk,
+                cv::FILLED);
+  cv::rectangle(image, left + cv::Point(0, -6), left + cv::Point(length_px, 0), kInk, 1);
+  const std::string label =
+      (length_m >= 1 ? std::to_string(static_cast<int>(length_m)) : std::to_string(length_m)) +
+      " m";
+  cv::putText(image, label, left + cv::Point(0, -12), cv::FONT_HERSHEY_SIMPLEX, 0.5, kInk, 1,
+              cv::LINE_AA);
+}
+
+void DrawNorthArrow(cv::Mat& image) {
+  const cv::Point tip(image.cols - 28, 14);
+  cv::rectangle(image, tip + cv::Point(-18, -8), tip + cv::Point(18, 50), kWhite, cv::FILLED);
+  const std::array<cv::Point, 3> arrow = {tip, tip + cv::Point(-10, 26), tip + cv::Point(10, 26)};
+  cv::fillConvexPoly(image, arrow.data(), 3, kInk, cv::LINE_AA);
+  cv::putText(image, "N", tip + cv::Point(-7, 46), cv::FONT_HERSHEY_SIMPLEX, 0.6, kInk, 2,
+              cv::LINE_AA);
+}
+
+void DrawItems(cv::Mat& image, const SiteReport& report, const PixelMapping& to_pixel) {
+  for (const db::ItemRecord& item : report.heatmap.items) {
+    const cv::Point p = to_pixel(report.frame.ToCrs(item.site_xy));
+    cv::circle(image, p, 6, kInk, cv::FILLED, cv::LINE_AA);
+    cv::circle(image, p, 4, StyleOf(item.class_name).bgr, cv::FILLED, cv::LINE_AA);
+  }
+}
+
+void DrawHotspots(cv::Mat& image, const SiteReport& report, const PixelMapping& to_pixel) {
+  const int radius = static_cast<int>(std::lround(report.bandwidth_m * to_pixel.pixels_per_m));
+  for (const HotspotFigures& h : report.hotspots) {
+    const cv::Point p = to_pixel(h.crs);
+    cv::circle(image, p, radius, kWhite, 3, cv::LINE_AA);
+    cv::circle(image, p, radius, kInk, 1, cv::LINE_AA);
+    const std::string rank = std::to_string(h.rank);
+    const cv::Point label =
+        p + cv::Point(static_cast<int>(radius * 0.72) + 2, -static_cast<int>(radius * 0.72) - 2);
+    cv::circle(image, label, 13, kInk, cv::FILLED, cv::LINE_AA);
+    cv::putText(image, rank, label + cv::Point(rank.size() > 1 ? -10 : -5, 6),
+                cv::FONT_HERSHEY_SIMPLEX, 0.55, kWhite, 2, cv::LINE_AA);
+  }
+}
+
+cv::Mat CloseUp(const cv::Mat& map, cv::Point centre, int half_px, int size_px) {
+  cv::Mat padded;
+  cv::copyMakeBorder(map, padded, half_px, half_px, half_px, half_px, cv::BORDER_CONSTANT,
+                     cv::Scalar(215, 215, 215));
+  cv::Mat crop = padded(cv::Rect(centre.x, centre.y, 2 * half_px, 2 * half_px)).clone();
+  cv::Mat scaled;
+  cv::resize(crop, scaled, {size_px, size_px}, 0, 0,
+             2 * half_px < size_px ? cv::INTER_NEAREST : cv::INTER_AREA);
+  cv::rectangle(scaled, {0, 0}, {size_px - 1, size_px - 1}, kInk, 1);
+  return scaled;
+}
+
+}  // namespace
+
+SiteMapFigure DrawSiteMap(const SiteReport& report, const SiteMapFigureOptions& options) {
+  const heatmap::Raster& density = report.heatmap.density.density;
+  heatmap::DensityPreviewOptions preview;
+  preview.max_size_px = options.max_size_px;
+  if (report.site_map) {
+    preview.occupancy_cell_size_m = report.site_map->resolution_m;
+    preview.occupancy = [&](double x_m, double y_m) {
+      return report.site_map->GreyAt(report.frame.FromCrs({x_m, y_m}));
+    };
+  }
+  heatmap::DensityImage image =
+      heatmap::RenderDensityImage(density, report.density_nodata, preview);
+  SiteMapFigure figure;
+  figure.peak_density_per_100m2 = image.peak;
+  figure.map = std::move(image.bgr);
+  const double pixels_per_m = image.pixels_per_cell / density.grid.cell_size_m;
+  figure.metres_per_pixel = 1.0 / pixels_per_m;
+  const PixelMapping to_pixel{&density.grid, pixels_per_m};
+  DrawItems(figure.map, report, to_pixel);
+  DrawHotspots(figure.map, report, to_pixel);
+
+  const int half_px = std::max(8, static_cast<int>(options.close_up_radius_m * pixels_per_m));
+  for (const HotspotFigures& h : report.hotspots) {
+    figure.close_ups.push_back(
+        CloseUp(figure.map, to_pixel(h.crs), half_px, options.close_up_size_px));
+  }
+  DrawScaleBar(figure.map, pixels_per_m);
+  DrawNorthArrow(figure.map);
+  return figure;
+}
+
+std::vector<unsigned char> EncodePng(const cv::Mat& image) {
+  std::vector<unsigned char> png;
+  if (!cv::imencode(".png", image, png)) throw InternalError("cannot encode a PNG image");
+  return png;
+}
+
+}  // namespace littermap::reports

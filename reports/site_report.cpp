@@ -1,0 +1,262 @@
+#include "reports/site_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <set>
+#include <unordered_map>
+#include <utility>
+
+#include <nlohmann/json.hpp>
+
+#include "core/error.hpp"
+
+namespace littermap::reports {
+namespace {
+
+std::vector<db::RunRecord> RunsByStartTime(db::SiteDatabase& site) {
+  std::vector<db::RunRecord> runs = site.Runs();
+  std::stable_sort(runs.begin(), runs.end(),
+                   [](const auto& a, const auto& b) { return a.start_time_s < b.start_time_s; });
+  return runs;
+}
+
+bool Selected(const db::RunRecord& run, const SiteReportOptions& options) {
+  return !(options.from_time_s && run.start_time_s < *options.from_time_s) &&
+         !(options.to_time_s && run.start_time_s >= *options.to_time_s);
+}
+
+int IntOf(const nlohmann::json& json, const char* key) {
+  const auto it = json.find(key);
+  return it != json.end() && it->is_number() ? it->get<int>() : 0;
+}
+
+// Reads reconstruct's quality.json as stored; its warnings go to `warnings`.
+RunQuality ParseQuality(const db::RunRecord& run, std::vector<std::string>& warnings) {
+  RunQuality quality;
+  if (run.reconstruction_quality.empty()) return quality;
+  const nlohmann::json json = nlohmann::json::parse(run.reconstruction_quality, nullptr, false);
+  if (!json.is_object()) {
+    warnings.push_back("its reconstruction quality record is unreadable");
+    return quality;
+  }
+  quality.known = true;
+  quality.scans = IntOf(json, "scans");
+  quality.key_frames = IntOf(json, "key_frames");
+  quality.loop_closures_found = IntOf(json, "loop_closures_found");
+  quality.loop_closures_accepted = IntOf(json, "loop_closures_accepted");
+  if (const auto routines = json.find("routines"); routines != json.end() && routines->is_object())
+    for (const auto& [name, count] : routines->items()) {
+      if (count.is_number()) quality.routines[name] = count.get<int>();
+    }
+  if (const auto list = json.find("warnings"); list != json.end() && list->is_array()) {
+    for (const auto& warning : *list) {
+      if (warning.is_string()) warnings.push_back("reconstruction: " + warning.get<std::string>());
+    }
+  }
+  return quality;
+}
+
+std::string Percent(double fraction) {
+  return std::to_string(static_cast<int>(std::lround(100.0 * fraction))) + " %";
+}
+
+void AddRunWarnings(const SiteReportOptions& options, RunFigures& run) {
+  if (!run.quality.known) {
+    run.warnings.push_back(
+        "no reconstruction quality on record (ingested from a truth directory or by an older "
+        "littermap)");
+  } else if (run.quality.scans > 0) {
+    const auto odometry = run.quality.routines.find("odometry-only");
+    const double share = odometry == run.quality.routines.end()
+                             ? 0.0
+                             : static_cast<double>(odometry->second) / run.quality.scans;
+    if (share > 0.1) {
+      run.warnings.push_back(Percent(share) +
+                             " of the laser scans were placed by wheel odometry alone: items "
+                             "may sit up to a metre off");
+    }
+  }
+  if (run.coverage_fraction < options.low_coverage_fraction) {
+    run.warnings.push_back("covered " + Percent(run.coverage_fraction) +
+                           " of the surveyed ground: compare its counts per 100 m2, not in total");
+  }
+  if (run.registration_quality && *run.registration_quality < options.low_registration_quality) {
+    run.warnings.push_back("matched onto the site map with a ratio of only " +
+                           Percent(*run.registration_quality) + ": its items may be misplaced");
+  }
+}
+
+double Distance(const db::PointXY& a, const db::PointXY& b) {
+  return std::hypot(a.x - b.x, a.y - b.y);
+}
+
+// New, still there and gone per run, replaying every run of the site in start-time order (so
+// the runs before the period set the state the period starts from).
+void CountItemChanges(db::SiteDatabase& site, const std::vector<db::RunRecord>& all_runs,
+                      std::vector<RunFigures>& figures) {
+  std::vector<std::int64_t> all_ids;
+  for (const auto& run : all_runs) all_ids.push_back(run.run_id);
+  std::unordered_map<std::int64_t, std::set<std::int64_t>> found_by_run;
+  for (const db::DetectionRecord& d : site.Detections(all_ids)) {
+    if (d.item_fid) found_by_run[d.run_id].insert(*d.item_fid);
+  }
+  std::unordered_map<std::int64_t, db::CoverageRecord> coverage_by_run;
+  for (db::CoverageRecord& c : site.Coverages()) coverage_by_run[c.run_id] = std::move(c);
+  const std::vector<db::ItemRecord> items = site.Items();
+  std::unordered_map<std::int64_t, const db::ItemRecord*> item_by_fid;
+  for (const auto& item : items) item_by_fid[item.fid] = &item;
+
+  std::set<std::int64_t> known;    // seen by some earlier run
+  std::set<std::int64_t> present;  // and not missed since
+  const db::SiteFrame& frame = site.site().frame;
+  for (const db::RunRecord& run : all_runs) {
+    const std::set<std::int64_t>& found = found_by_run[run.run_id];
+    RunFigures* out = nullptr;
+    for (RunFigures& f : figures) {
+      if (f.run_id == run.run_id) out = &f;
+    }
+    const auto coverage = coverage_by_run.find(run.run_id);
+    for (auto it = present.begin(); it != present.end();) {
+      const bool looked = coverage != coverage_by_run.end() &&
+                          coverage->second.Covers(frame.ToCrs(item_by_fid.at(*it)->site_xy));
+      if (looked && !found.count(*it)) {
+        if (out) ++out->items_gone;
+        it = present.erase(it);
+      } else {
+        ++it;
+      }
+    }
+    for (const std::int64_t fid : found) {
+      if (out) {
+        ++(known.count(fid) ? out->items_still_there : out->new_items);
+        const auto item = item_by_fid.find(fid);
+        if (item != item_by_fid.end()) ++out->items_by_class[item->second->class_name];
+      }
+      known.insert(fid);
+      present.insert(fid);
+    }
+    if (out) out->items_found = found.size();
+  }
+}
+
+// The mean of a run's density over its surveyed cells within `radius_m` of a point: what the run
+// found around a hotspot, even where the hotspot's own cell lies at the edge of its coverage.
+std::optional<double> MeanWithin(const heatmap::Raster& density, const db::PointXY& crs,
+                                 double radius_m, float nodata) {
+  const heatmap::GridGeometry& grid = density.grid;
+  double sum = 0;
+  int cells = 0;
+  for (int r = 0; r < grid.height; ++r) {
+    const double dy = grid.CellCenterY(r) - crs.y;
+    if (std::abs(dy) > radius_m) continue;
+    for (int c = 0; c < grid.width; ++c) {
+      const float value = density.at(c, r);
+      if (value == nodata || std::hypot(grid.CellCenterX(c) - crs.x, dy) > radius_m) continue;
+      sum += value;
+      ++cells;
+    }
+  }
+  return cells > 0 ? std::optional<double>(sum / cells) : std::nullopt;
+}
+
+}  // namespace
+
+SiteReport BuildSiteReport(db::SiteDatabase& site, const SiteReportOptions& options) {
+  SiteReport report;
+  report.site_name = site.site().name;
+  report.frame = site.site().frame;
+  report.from_time_s = options.from_time_s;
+  report.to_time_s = options.to_time_s;
+  report.bandwidth_m = options.heatmap.density.kernel.bandwidth_m;
+  report.density_nodata = options.heatmap.density.nodata;
+
+  heatmap::SiteHeatmapOptions heatmap_options = options.heatmap;
+  heatmap_options.from_time_s = options.from_time_s;
+  heatmap_options.to_time_s = options.to_time_s;
+  heatmap_options.class_name.clear();
+  heatmap_options.run_ids.clear();
+  report.heatmap = heatmap::ComputeSiteHeatmap(site, heatmap_options);
+  const heatmap::SiteHeatmap& map = report.heatmap;
+  report.items = map.items.size();
+  report.detections = map.detections;
+  report.peak_density_per_100m2 = map.density.max_density;
+  for (const db::ItemRecord& item : map.items) ++report.items_by_class[item.class_name];
+  std::size_t surveyed_cells = 0;
+  for (const float effort : map.effort.values) surveyed_cells += effort > 0.0f;
+  report.surveyed_area_m2 = static_cast<double>(surveyed_cells) * map.effort.grid.cell_area_m2();
+  report.site_map = site.SiteMap();
+
+  const std::vector<db::RunRecord> all_runs = RunsByStartTime(site);
+  std::unordered_map<std::int64_t, double> observed_area;
+  for (const db::CoverageRecord& c : site.Coverages()) observed_area[c.run_id] = c.observed_area_m2;
+  std::unordered_map<std::int64_t, std::size_t> detections_by_run;
+  for (const db::DetectionRecord& d : site.Detections(map.run_ids)) ++detections_by_run[d.run_id];
+  for (const db::RunRecord& run : all_runs) {
+    if (!Selected(run, options)) continue;
+    RunFigures& f = report.runs.emplace_back();
+    f.run_id = run.run_id;
+    f.name = run.name;
+    f.start_time_s = run.start_time_s;
+    f.end_time_s = run.end_time_s;
+    f.length_m = run.length_m;
+    f.observed_area_m2 = observed_area[run.run_id];
+    f.coverage_fraction = report.surveyed_area_m2 > 0
+                              ? std::min(1.0, f.observed_area_m2 / report.surveyed_area_m2)
+                              : 0.0;
+    f.detections = detections_by_run[run.run_id];
+    f.registration_quality = run.registration_quality;
+    f.quality = ParseQuality(run, f.warnings);
+    report.length_m += f.length_m;
+  }
+  CountItemChanges(site, all_runs, report.runs);
+  for (RunFigures& f : report.runs) {
+    f.items_per_100m2 = f.observed_area_m2 > 0
+                            ? 100.0 * static_cast<double>(f.items_found) / f.observed_area_m2
+                            : 0.0;
+    AddRunWarnings(options, f);
+  }
+
+  // Hotspots of the whole period, and how dense each run found them.
+  std::vector<heatmap::ClassifiedPoint> points;
+  for (const db::ItemRecord& item : map.items) {
+    points.push_back({report.frame.ToCrs(item.site_xy), item.class_name});
+  }
+  heatmap::HotspotOptions hotspot_options;
+  hotspot_options.separation_m = report.bandwidth_m;
+  hotspot_options.max_count = options.max_hotspots;
+  const float nodata = options.heatmap.density.nodata;
+  std::vector<heatmap::Raster> run_density;
+  for (const RunFigures& run : report.runs) {
+    heatmap::SiteHeatmapOptions one_run = heatmap_options;
+    one_run.run_ids = {run.run_id};
+    run_density.push_back(heatmap::ComputeSiteHeatmap(site, one_run).density.density);
+  }
+  std::unique_ptr<heatmap::Wgs84Transform> wgs84;
+  if (report.frame.georeferenced()) {
+    wgs84 = std::make_unique<heatmap::Wgs84Transform>(report.frame.epsg_code);
+  } else {
+    report.warnings.push_back(
+        "The site has a local frame (no --crs at 'site init'): positions are in metres from the "
+        "dock, without GPS coordinates.");
+  }
+  for (const heatmap::Hotspot& h :
+       heatmap::FindHotspots(map.density.density, nodata, points, hotspot_options)) {
+    HotspotFigures& f = report.hotspots.emplace_back();
+    f.rank = h.rank;
+    f.crs = h.crs;
+    f.site_xy = report.frame.FromCrs(h.crs);
+    if (wgs84) f.wgs84 = (*wgs84)(h.crs);
+    f.density_per_100m2 = h.density_per_100m2;
+    f.dominant_class = h.dominant_class;
+    for (const heatmap::ClassifiedPoint& p : points) {
+      if (Distance(p.crs, h.crs) <= report.bandwidth_m) ++f.items_by_class[p.class_name];
+    }
+    for (const heatmap::Raster& density : run_density) {
+      f.density_by_run.push_back(MeanWithin(density, h.crs, report.bandwidth_m, nodata));
+    }
+  }
+  return report;
+}
+
+}  // namespace littermap::reports

@@ -1,0 +1,102 @@
+// The report files of the fixture site: one self-contained page that escapes what people typed,
+// and report.json with the same figures.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "reports/fixture_site.hpp"
+#include "reports/report_files.hpp"
+#include "support/temp_dir.hpp"
+
+namespace littermap::reports {
+namespace {
+
+using testing::TempDir;
+
+std::string Slurp(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Occurrences of a plain substring (std::regex recurses per character: the page's base64 images
+// would overflow the stack).
+std::size_t CountOf(const std::string& text, const std::string& needle) {
+  std::size_t count = 0;
+  for (std::size_t at = text.find(needle); at != std::string::npos;
+       at = text.find(needle, at + needle.size())) {
+    ++count;
+  }
+  return count;
+}
+
+TEST(HtmlReport, IsOneSelfContainedPageThatEscapesNames) {
+  TempDir dir;
+  db::SiteDatabase site =
+      CreateFixtureSite(dir / "park.gpkg", "<script>alert('x')</script> & \"Park\"");
+  ReportFilesOptions options;
+  options.html.generated_utc = "2026-11-27 12:00";
+  options.html.version = "test";
+  const SiteReport report = WriteReportFiles(site, dir / "report", options);
+  const std::string html = Slurp(dir / "report" / "index.html");
+
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+  EXPECT_NE(html.find("&lt;script&gt;alert(&#39;x&#39;)&lt;/script&gt; &amp; &quot;Park&quot;"),
+            std::string::npos);
+  // Nothing to fetch: every image inline, no URL but the SVG namespace.
+  EXPECT_EQ(CountOf(html, "<img "), 1 + report.hotspots.size());
+  EXPECT_EQ(CountOf(html, "src=\"data:image/png;base64,"), 1 + report.hotspots.size());
+  EXPECT_EQ(CountOf(html, "src="), 1 + report.hotspots.size());
+  EXPECT_EQ(CountOf(html, "http://"), CountOf(html, "xmlns=\"http://www.w3.org/2000/svg\""));
+  EXPECT_EQ(CountOf(html, "https://"), 0u);
+  for (const char* fetch : {"<link", "<script", "@import", "url(", "<iframe", "<object"}) {
+    EXPECT_EQ(CountOf(html, fetch), 0u) << fetch;
+  }
+  // One hotspot row each, every section there, A4 print rules.
+  EXPECT_EQ(CountOf(html, "<img class=\"close-up\""), report.hotspots.size());
+  for (const char* section :
+       {"id=\"map\"", "id=\"hotspots\"", "id=\"classes\"", "id=\"change\"", "id=\"quality\""}) {
+    EXPECT_NE(html.find(section), std::string::npos) << section;
+  }
+  EXPECT_NE(html.find("@page { size: A4"), std::string::npos);
+  EXPECT_NE(html.find("name=\"viewport\""), std::string::npos);
+  EXPECT_EQ(CountOf(html, "<tr><td>2026-11-"), 3u);  // one row per run in the change table
+}
+
+TEST(HtmlReport, ReportJsonCarriesTheSameFigures) {
+  TempDir dir;
+  db::SiteDatabase site = CreateFixtureSite(dir / "park.gpkg", "Park");
+  const SiteReport report = WriteReportFiles(site, dir / "report", {});
+  const auto json = nlohmann::json::parse(Slurp(dir / "report" / "report.json"));
+  EXPECT_EQ(json["site"]["name"], "Park");
+  EXPECT_TRUE(json["site"]["epsg_code"].is_null());
+  EXPECT_EQ(json["totals"]["runs"], 3);
+  EXPECT_EQ(json["totals"]["items"], report.items);
+  EXPECT_EQ(json["totals"]["detections"], report.detections);
+  EXPECT_EQ(json["items_by_class"]["cup"], 2);
+  ASSERT_EQ(json["runs"].size(), 3u);
+  EXPECT_EQ(json["runs"][1]["name"], "week 2");
+  EXPECT_EQ(json["runs"][1]["items_gone"], 1);
+  EXPECT_EQ(json["runs"][0]["start"]["utc"], "2026-11-01T09:20:00Z");
+  EXPECT_EQ(json["runs"][0]["reconstruction"]["routines"]["odometry-only"], 20);
+  ASSERT_EQ(json["hotspots"].size(), report.hotspots.size());
+  EXPECT_EQ(json["hotspots"][0]["rank"], 1);
+  EXPECT_DOUBLE_EQ(json["hotspots"][0]["density_per_100m2"].get<double>(),
+                   report.hotspots[0].density_per_100m2);
+  EXPECT_EQ(json["hotspots"][0]["density_by_run"].size(), 3u);
+}
+
+TEST(HtmlReport, AnUnwritableDirectoryIsAUsageError) {
+  TempDir dir;
+  db::SiteDatabase site = CreateFixtureSite(dir / "park.gpkg", "Park");
+  std::ofstream(dir / "blocker") << "a file, not a directory";
+  EXPECT_THROW(WriteReportFiles(site, dir / "blocker" / "report", {}), UsageError);
+}
+
+}  // namespace
+}  // namespace littermap::reports
