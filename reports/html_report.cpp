@@ -51,6 +51,7 @@ th, td { border-bottom: 1px solid var(--line); padding: 5px 7px; text-align: lef
 th { background: var(--panel); font-weight: 600; }
 td.n, th.n { text-align: right; white-space: nowrap; }
 td img.close-up { width: 110px; height: 110px; display: block; }
+td.where { min-width: 200px; }
 .bar { display: inline-block; height: 10px; background: var(--accent); vertical-align: 0; }
 .charts { display: grid; grid-template-columns: repeat(3, 1fr); gap: 12px; }
 .chart { width: 100%; height: auto; font-size: 11px; }
@@ -68,6 +69,7 @@ footer { margin-top: 2em; color: var(--muted); font-size: 0.85em; }
   .cards { grid-template-columns: repeat(2, 1fr); }
   .charts { grid-template-columns: 1fr; }
   td img.close-up { width: 80px; height: 80px; }
+  .table-wrap table { min-width: 720px; }  /* scroll sideways rather than squash columns */
 }
 @page { size: A4; margin: 12mm; }
 @media print {
@@ -255,7 +257,7 @@ void HotspotSection(const SiteReport& report, const SiteMapFigure& figure, std::
     for (const auto& v : h.density_by_run) peak = std::max(peak, v.value_or(0.0));
     html += "<tr><td class=\"n\"><b>" + std::to_string(h.rank) + "</b></td><td>" +
             Img(figure.close_ups[i], "Close-up of hotspot " + std::to_string(h.rank), "close-up") +
-            "</td><td>" + Location(report, h) + "</td><td class=\"n\">" +
+            "</td><td class=\"where\">" + Location(report, h) + "</td><td class=\"n\">" +
             Fixed(h.density_per_100m2, 1) + "</td><td>" + ClassLabel(h.dominant_class) +
             "</td><td>" + ClassList(h.items_by_class) + "</td><td>" +
             Sparkline(h.density_by_run, peak, 96, 30) + "</td></tr>";
