@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -223,11 +224,13 @@ void RunSurvey(const SurveyArguments& arguments, CliContext& context) {
     context.task_prefix = label + " ";
     try {
       stage.run();
-    } catch (const Error& e) {
+    } catch (const std::exception& e) {
       context.task_prefix.clear();
-      throw Error(e.kind(), "survey stage '" + stage.name + "' failed: " + e.what() +
-                                "\n  the earlier stages' outputs are kept in " + out.string() +
-                                "; once fixed, the same command resumes at this stage");
+      const auto* error = dynamic_cast<const Error*>(&e);
+      throw Error(error ? error->kind() : ErrorKind::kInternal,
+                  "survey stage '" + stage.name + "' failed: " + e.what() +
+                      "\n  the earlier stages' outputs are kept in " + out.string() +
+                      "; once fixed, the same command resumes at this stage");
     }
     context.FinishProgress();
     context.task_prefix.clear();
