@@ -80,7 +80,6 @@ TEST(SurveyCli, ThreeWeeklyRunsMakeOneReportThatMatchesTheDatabase) {
   EXPECT_EQ(report["totals"]["items"],
             Integer(db, "SELECT count(DISTINCT item_fid) FROM detections"));
   EXPECT_EQ(report["totals"]["detections"], Integer(db, "SELECT count(*) FROM detections"));
-  EXPECT_GT(report["totals"]["items"].get<int>(), 5);
   {
     SqliteStatement classes = db.Prepare(
         "SELECT class, count(*) FROM litter_items WHERE fid IN (SELECT item_fid FROM detections) "
@@ -112,6 +111,7 @@ TEST(SurveyCli, ThreeWeeklyRunsMakeOneReportThatMatchesTheDatabase) {
                 Real(db, "SELECT observed_area_m2 FROM coverage WHERE run_id = ?", id), 1e-9);
     EXPECT_TRUE(run["reconstruction"]["known"].get<bool>());
     EXPECT_GT(run["length_m"].get<double>(), 15.0);  // 40 s at 0.6 m/s
+    EXPECT_GE(run["items_found"].get<int>(), 1);     // litter lines the first leg's path
     new_items += run["new_items"].get<int>();
   }
   EXPECT_EQ(new_items, report["totals"]["items"].get<int>());
