@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "reports/html_text.hpp"
 
@@ -39,7 +40,8 @@ std::string StackedBarChart(const std::vector<std::string>& labels,
     for (const ChartSeries& s : series) total += i < s.values.size() ? s.values[i] : 0;
     peak = std::max(peak, total);
   }
-  const auto [axis_max, step] = NiceAxis(peak);
+  const std::pair<double, double> axis = NiceAxis(peak);
+  const double axis_max = axis.first, step = axis.second;
   const auto y_of = [&](double v) { return top + plot_h * (1 - v / axis_max); };
 
   std::string svg = "<svg class=\"chart\" viewBox=\"0 0 " + std::to_string(options.width_px) + " " +
