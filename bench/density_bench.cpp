@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "bench/lawn_mower.hpp"
 #include "heatmap/density_map.hpp"
 #include "heatmap/survey_effort.hpp"
 
@@ -49,14 +50,8 @@ BENCHMARK(BM_EffortNormalisedDensity)->Arg(1'000'000)->Unit(benchmark::kMillisec
 void BM_SurveyEffortOneRun(benchmark::State& state) {
   const GridGeometry grid = BenchGrid();
   // A 15-minute run at 0.5 m/s sampled at 10 Hz: a lawn-mower pattern, 9000 poses.
-  std::vector<littermap::PlanarPose> run;
-  for (int i = 0; i < 9000; ++i) {
-    const double s = 0.05 * i;
-    const int lane = static_cast<int>(s / 100.0);
-    const double along = s - 100.0 * lane;
-    const bool east = lane % 2 == 0;
-    run.push_back({east ? 100.0 + along : 200.0 - along, 100.0 + 6.0 * lane, east ? 0.0 : 3.14159});
-  }
+  const std::vector<littermap::PlanarPose> run =
+      littermap::bench::LawnMowerRun(100.0, 100.0, 100.0);
   for (auto _ : state) {
     auto coverage = littermap::heatmap::CoverRun(grid, run, {});
     benchmark::DoNotOptimize(coverage.observed.data());

@@ -11,25 +11,13 @@
 #include <string>
 #include <vector>
 
+#include "bench/lawn_mower.hpp"
 #include "heatmap/run_ingest.hpp"
 #include "reports/report_files.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-using littermap::PlanarPose;
-
-std::vector<PlanarPose> LawnMower() {
-  std::vector<PlanarPose> run;
-  for (int i = 0; i < 9000; ++i) {
-    const double s = 0.05 * i;
-    const int lane = static_cast<int>(s / 90.0);
-    const double along = s - 90.0 * lane;
-    const bool east = lane % 2 == 0;
-    run.push_back({east ? 5.0 + along : 95.0 - along, 3.0 + 6.0 * lane, east ? 0.0 : 3.14159});
-  }
-  return run;
-}
 
 fs::path SurveyedSite(int runs) {
   const fs::path file =
@@ -53,7 +41,7 @@ fs::path SurveyedSite(int runs) {
     run.source_digest = "bench-" + std::to_string(r);
     run.start_time_s = 1.79e9 + r * 7 * 86400.0;
     run.end_time_s = run.start_time_s + 900;
-    run.T_site_base = LawnMower();
+    run.T_site_base = littermap::bench::LawnMowerRun(5.0, 3.0, 90.0);
     for (int i = 0; i < 150; ++i) {
       littermap::db::PointXY p{x(random), y(random)};
       if (!litter.empty() && unit(random) < 0.6) {
