@@ -99,8 +99,6 @@ std::string Distance(double m) {
   return m >= 1000 ? Fixed(m / 1000, 2) + " km" : Fixed(m, 0) + " m";
 }
 
-std::string Percent(double fraction) { return Fixed(100 * fraction, 0) + " %"; }
-
 std::string Date(double unix_s) { return FormatUtc(unix_s, "%Y-%m-%d %H:%M"); }
 
 std::string Img(const cv::Mat& image, const std::string& alt, const char* css_class) {
@@ -200,7 +198,7 @@ void KeyFigures(const SiteReport& report, std::string& html) {
     html += "The latest run (" + EscapeHtml(latest->name) + ", " + Date(latest->start_time_s) +
             ") found " + Plural(latest->items_found, "item", "items") + ", " +
             Count(latest->new_items) + " of them new, on " + Area(latest->observed_area_m2) + " (" +
-            Percent(latest->coverage_fraction) + " of the surveyed ground).";
+            FormatPercent(latest->coverage_fraction) + " of the surveyed ground).";
   }
   html += "</p>";
 }
@@ -279,7 +277,7 @@ void ClassSection(const SiteReport& report, std::string& html) {
     const double share =
         report.items > 0 ? static_cast<double>(count) / static_cast<double>(report.items) : 0;
     html += "<tr><td>" + ClassLabel(name) + "</td><td class=\"n\">" + std::to_string(count) +
-            "</td><td class=\"n\">" + Percent(share) +
+            "</td><td class=\"n\">" + FormatPercent(share) +
             "</td><td><span class=\"bar\" style=\"width:" + std::to_string(160 * count / most) +
             "px\"></span></td></tr>";
   }
@@ -322,11 +320,12 @@ void ChangeSection(const SiteReport& report, std::string& html) {
   for (const RunFigures& run : report.runs) {
     html += "<tr><td>" + Date(run.start_time_s) + "</td><td>" + EscapeHtml(run.name) +
             "</td><td class=\"n\">" + Distance(run.length_m) + "</td><td class=\"n\">" +
-            Area(run.observed_area_m2) + "</td><td class=\"n\">" + Percent(run.coverage_fraction) +
-            "</td><td class=\"n\">" + Count(run.items_found) + "</td><td class=\"n\">" +
-            Count(run.new_items) + "</td><td class=\"n\">" + Count(run.items_still_there) +
-            "</td><td class=\"n\">" + Count(run.items_gone) + "</td><td class=\"n\">" +
-            Fixed(run.items_per_100m2, 2) + "</td></tr>";
+            Area(run.observed_area_m2) + "</td><td class=\"n\">" +
+            FormatPercent(run.coverage_fraction) + "</td><td class=\"n\">" +
+            Count(run.items_found) + "</td><td class=\"n\">" + Count(run.new_items) +
+            "</td><td class=\"n\">" + Count(run.items_still_there) + "</td><td class=\"n\">" +
+            Count(run.items_gone) + "</td><td class=\"n\">" + Fixed(run.items_per_100m2, 2) +
+            "</td></tr>";
   }
   html += "</tbody></table></div></section>";
 }
@@ -337,7 +336,7 @@ std::string Routines(const RunQuality& quality) {
   for (const auto& [name, count] : quality.routines) {
     if (count == 0) continue;
     if (!text.empty()) text += ", ";
-    text += EscapeHtml(name) + " " + Percent(static_cast<double>(count) / quality.scans);
+    text += EscapeHtml(name) + " " + FormatPercent(static_cast<double>(count) / quality.scans);
   }
   return text;
 }
@@ -361,9 +360,9 @@ void QualitySection(const SiteReport& report, std::string& html) {
                                      std::to_string(run.quality.loop_closures_found)
                                : std::string("–")) +
             "</td><td class=\"n\">" +
-            (run.registration_quality ? Percent(*run.registration_quality)
+            (run.registration_quality ? FormatPercent(*run.registration_quality)
                                       : std::string("defines the map")) +
-            "</td><td class=\"n\">" + Percent(run.coverage_fraction) + "</td><td>";
+            "</td><td class=\"n\">" + FormatPercent(run.coverage_fraction) + "</td><td>";
     if (run.warnings.empty()) {
       html += "<span class=\"ok\">none</span>";
     } else {

@@ -62,4 +62,6 @@ std::string FormatNumber(double value, int decimals) {
   return digits;
 }
 
+std::string FormatPercent(double fraction) { return FormatNumber(100 * fraction, 0) + " %"; }
+
 }  // namespace littermap::reports

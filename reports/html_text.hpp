@@ -17,4 +17,7 @@ std::string Base64(std::span<const unsigned char> bytes);
 // "12.3" with `decimals` digits after the point; thousands grouped with a thin space.
 std::string FormatNumber(double value, int decimals);
 
+// A fraction as a whole percentage: 0.184 -> "18 %".
+std::string FormatPercent(double fraction);
+
 }  // namespace littermap::reports

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "reports/html_text.hpp"
 
 namespace littermap::reports {
 namespace {
@@ -19,11 +20,6 @@ std::vector<db::RunRecord> RunsByStartTime(db::SiteDatabase& site) {
   std::stable_sort(runs.begin(), runs.end(),
                    [](const auto& a, const auto& b) { return a.start_time_s < b.start_time_s; });
   return runs;
-}
-
-bool Selected(const db::RunRecord& run, const SiteReportOptions& options) {
-  return !(options.from_time_s && run.start_time_s < *options.from_time_s) &&
-         !(options.to_time_s && run.start_time_s >= *options.to_time_s);
 }
 
 int IntOf(const nlohmann::json& json, const char* key) {
@@ -57,10 +53,6 @@ RunQuality ParseQuality(const db::RunRecord& run, std::vector<std::string>& warn
   return quality;
 }
 
-std::string Percent(double fraction) {
-  return std::to_string(static_cast<int>(std::lround(100.0 * fraction))) + " %";
-}
-
 void AddRunWarnings(const SiteReportOptions& options, RunFigures& run) {
   if (!run.quality.known) {
     run.warnings.push_back(
@@ -72,18 +64,19 @@ void AddRunWarnings(const SiteReportOptions& options, RunFigures& run) {
                              ? 0.0
                              : static_cast<double>(odometry->second) / run.quality.scans;
     if (share > 0.1) {
-      run.warnings.push_back(Percent(share) +
+      run.warnings.push_back(FormatPercent(share) +
                              " of the laser scans were placed by wheel odometry alone: items "
                              "may sit up to a metre off");
     }
   }
   if (run.coverage_fraction < options.low_coverage_fraction) {
-    run.warnings.push_back("covered " + Percent(run.coverage_fraction) +
+    run.warnings.push_back("covered " + FormatPercent(run.coverage_fraction) +
                            " of the surveyed ground: compare its counts per 100 m2, not in total");
   }
   if (run.registration_quality && *run.registration_quality < options.low_registration_quality) {
     run.warnings.push_back("matched onto the site map with a ratio of only " +
-                           Percent(*run.registration_quality) + ": its items may be misplaced");
+                           FormatPercent(*run.registration_quality) +
+                           ": its items may be misplaced");
   }
 }
 
@@ -94,15 +87,13 @@ double Distance(const db::PointXY& a, const db::PointXY& b) {
 // New, still there and gone per run, replaying every run of the site in start-time order (so
 // the runs before the period set the state the period starts from).
 void CountItemChanges(db::SiteDatabase& site, const std::vector<db::RunRecord>& all_runs,
+                      const std::vector<db::DetectionRecord>& detections,
+                      const std::unordered_map<std::int64_t, db::CoverageRecord>& coverage_by_run,
                       std::vector<RunFigures>& figures) {
-  std::vector<std::int64_t> all_ids;
-  for (const auto& run : all_runs) all_ids.push_back(run.run_id);
   std::unordered_map<std::int64_t, std::set<std::int64_t>> found_by_run;
-  for (const db::DetectionRecord& d : site.Detections(all_ids)) {
+  for (const db::DetectionRecord& d : detections) {
     if (d.item_fid) found_by_run[d.run_id].insert(*d.item_fid);
   }
-  std::unordered_map<std::int64_t, db::CoverageRecord> coverage_by_run;
-  for (db::CoverageRecord& c : site.Coverages()) coverage_by_run[c.run_id] = std::move(c);
   const std::vector<db::ItemRecord> items = site.Items();
   std::unordered_map<std::int64_t, const db::ItemRecord*> item_by_fid;
   for (const auto& item : items) item_by_fid[item.fid] = &item;
@@ -187,20 +178,28 @@ SiteReport BuildSiteReport(db::SiteDatabase& site, const SiteReportOptions& opti
   report.surveyed_area_m2 = static_cast<double>(surveyed_cells) * map.effort.grid.cell_area_m2();
   report.site_map = site.SiteMap();
 
+  // Every run of the site, read once: the runs before the period set the state it starts from.
   const std::vector<db::RunRecord> all_runs = RunsByStartTime(site);
-  std::unordered_map<std::int64_t, double> observed_area;
-  for (const db::CoverageRecord& c : site.Coverages()) observed_area[c.run_id] = c.observed_area_m2;
+  std::vector<std::int64_t> all_ids;
+  for (const db::RunRecord& run : all_runs) all_ids.push_back(run.run_id);
+  const std::vector<db::DetectionRecord> detections = site.Detections(all_ids);
+  std::unordered_map<std::int64_t, db::CoverageRecord> coverage_by_run;
+  for (db::CoverageRecord& c : site.Coverages()) coverage_by_run[c.run_id] = std::move(c);
   std::unordered_map<std::int64_t, std::size_t> detections_by_run;
-  for (const db::DetectionRecord& d : site.Detections(map.run_ids)) ++detections_by_run[d.run_id];
+  for (const db::DetectionRecord& d : detections) ++detections_by_run[d.run_id];
+  // The period's runs are those the heatmap selected.
+  const std::set<std::int64_t> selected(map.run_ids.begin(), map.run_ids.end());
   for (const db::RunRecord& run : all_runs) {
-    if (!Selected(run, options)) continue;
+    if (!selected.count(run.run_id)) continue;
     RunFigures& f = report.runs.emplace_back();
     f.run_id = run.run_id;
     f.name = run.name;
     f.start_time_s = run.start_time_s;
     f.end_time_s = run.end_time_s;
     f.length_m = run.length_m;
-    f.observed_area_m2 = observed_area[run.run_id];
+    const auto coverage = coverage_by_run.find(run.run_id);
+    f.observed_area_m2 =
+        coverage == coverage_by_run.end() ? 0.0 : coverage->second.observed_area_m2;
     f.coverage_fraction = report.surveyed_area_m2 > 0
                               ? std::min(1.0, f.observed_area_m2 / report.surveyed_area_m2)
                               : 0.0;
@@ -209,7 +208,7 @@ SiteReport BuildSiteReport(db::SiteDatabase& site, const SiteReportOptions& opti
     f.quality = ParseQuality(run, f.warnings);
     report.length_m += f.length_m;
   }
-  CountItemChanges(site, all_runs, report.runs);
+  CountItemChanges(site, all_runs, detections, coverage_by_run, report.runs);
   for (RunFigures& f : report.runs) {
     f.items_per_100m2 = f.observed_area_m2 > 0
                             ? 100.0 * static_cast<double>(f.items_found) / f.observed_area_m2
