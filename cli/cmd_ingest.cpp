@@ -21,6 +21,7 @@
 
 #include "capture/tum_trajectory.hpp"
 #include "cli/cli_context.hpp"
+#include "cli/ingest_command.hpp"
 #include "core/error.hpp"
 #include "core/map_server_grey.hpp"
 #include "core/pose3.hpp"
@@ -171,31 +172,25 @@ std::string ReadQuality(const std::filesystem::path& file) {
 
 void RunIngest(IngestArguments arguments, CliContext& context) {
   const std::filesystem::path run_dir = arguments.run_dir;
-  const auto trajectory_file = run_dir / "trajectory.tum";
-  auto items_file = run_dir / "items.csv";
-  if (!std::filesystem::exists(items_file) && std::filesystem::exists(run_dir / "litter.csv")) {
-    items_file = run_dir / "litter.csv";
+  const RunDirectoryFiles files = FindRunDirectoryFiles(run_dir);
+  if (files.simulator_truth) {
     arguments.options.drop_unobserved_items = true;
-    context.Warn(items_file.string() +
+    context.Warn(files.items.string() +
                  ": no items.csv; using the simulator's truth as the run's items (only those "
                  "inside the camera coverage)");
   }
-  if (!std::filesystem::exists(items_file)) {
-    throw BadInputError(run_dir.string() + ": no items.csv (run 'littermap detect' first)");
-  }
   db::SiteDatabase site = db::SiteDatabase::Open(arguments.site);
-  const std::vector<TumPose> poses = ReadTumTrajectory(trajectory_file);
+  const std::vector<TumPose> poses = ReadTumTrajectory(files.trajectory);
   heatmap::RunInput run;
   run.name = arguments.name.empty() ? std::filesystem::absolute(run_dir).filename().string()
                                     : arguments.name;
-  const std::filesystem::path files[] = {trajectory_file, items_file};
-  run.source_digest = heatmap::DigestFiles(files);
+  run.source_digest = RunDigest(files);
   run.T_site_base = PlanarTrajectory(poses);
   if (!poses.empty()) {
     run.start_time_s = ToSeconds(poses.front().stamp_ns);
     run.end_time_s = ToSeconds(poses.back().stamp_ns);
   }
-  run.items = heatmap::ReadRunItems(items_file);
+  run.items = heatmap::ReadRunItems(files.items);
   run.reconstruction_quality = ReadQuality(run_dir / "quality.json");
   const heatmap::IngestResult result = PlaceAndIngest(arguments, site, run);
   if (result.already_ingested) {
@@ -215,6 +210,23 @@ void RunIngest(IngestArguments arguments, CliContext& context) {
 }
 
 }  // namespace
+
+RunDirectoryFiles FindRunDirectoryFiles(const std::filesystem::path& run_dir) {
+  RunDirectoryFiles files{run_dir / "trajectory.tum", run_dir / "items.csv", false};
+  if (!std::filesystem::exists(files.items) && std::filesystem::exists(run_dir / "litter.csv")) {
+    files.items = run_dir / "litter.csv";
+    files.simulator_truth = true;
+  }
+  if (!std::filesystem::exists(files.items)) {
+    throw BadInputError(run_dir.string() + ": no items.csv (run 'littermap detect' first)");
+  }
+  return files;
+}
+
+std::string RunDigest(const RunDirectoryFiles& files) {
+  const std::filesystem::path digested[] = {files.trajectory, files.items};
+  return heatmap::DigestFiles(digested);
+}
 
 void RegisterIngestCommand(CLI::App& app, CliContext& context) {
   auto arguments = std::make_shared<IngestArguments>();

@@ -20,10 +20,10 @@
 #include <vector>
 
 #include "cli/cli_context.hpp"
+#include "cli/ingest_command.hpp"
 #include "cli/report_command.hpp"
 #include "core/error.hpp"
 #include "db/site_database.hpp"
-#include "heatmap/run_ingest.hpp"
 #include "reports/class_palette.hpp"
 #include "reports/report_files.hpp"
 
@@ -102,8 +102,7 @@ db::SiteDatabase OpenOrCreateSite(const SurveyArguments& arguments) {
 void CheckNotIngestedDifferently(const SurveyArguments& arguments, const fs::path& run_dir,
                                  const std::string& name) {
   db::SiteDatabase site = db::SiteDatabase::Open(arguments.site);
-  const fs::path files[] = {run_dir / "trajectory.tum", run_dir / "items.csv"};
-  const std::string digest = heatmap::DigestFiles(files);
+  const std::string digest = RunDigest(FindRunDirectoryFiles(run_dir));
   for (const db::RunRecord& run : site.Runs()) {
     if (run.name == name && run.source_digest != digest) {
       throw BadInputError(arguments.site + ": already holds a run named '" + name +
