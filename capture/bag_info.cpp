@@ -64,8 +64,8 @@ BagInfo ParseMetadata(const YAML::Node& document, const std::string& where) {
   info.version = Field<int>(root, "version", where);
   info.storage_identifier = Field<std::string>(root, "storage_identifier", where);
   info.duration_ns = Field<TimestampNs>(root["duration"], "nanoseconds", where + ": duration");
-  info.starting_time_ns =
-      Field<TimestampNs>(root["starting_time"], "nanoseconds_since_epoch", where + ": starting_time");
+  info.starting_time_ns = Field<TimestampNs>(root["starting_time"], "nanoseconds_since_epoch",
+                                             where + ": starting_time");
   info.message_count = Field<std::uint64_t>(root, "message_count", where);
   info.ros_distro = OptionalField<std::string>(root, "ros_distro", where, "");
   const YAML::Node topics = root["topics_with_message_count"];
