@@ -11,12 +11,6 @@ constexpr std::size_t kMaxLineBytes = 1024;           // SCIP lines are at most 
 constexpr std::size_t kMaxReplyLines = 4096;          // a 1440-step MD frame has ~70 lines
 constexpr std::uint32_t kSensorClockMask = 0xFFFFFF;  // 24-bit millisecond counter
 
-TimestampNs HostNowNs() {
-  return std::chrono::duration_cast<std::chrono::nanoseconds>(
-             std::chrono::system_clock::now().time_since_epoch())
-      .count();
-}
-
 }  // namespace
 
 void ScipClientOptions::Validate() const {
@@ -30,10 +24,10 @@ void ScipClientOptions::Validate() const {
 }
 
 ScipClient::ScipClient(const std::string& uri, const ScipClientOptions& options)
-    : ScipClient(OpenScipTransport(uri, options.transport), options) {}
+    : ScipClient(OpenByteStream(uri, {"laser", "scip://", "scip:"}, options.transport), options) {}
 
-ScipClient::ScipClient(std::unique_ptr<ScipTransport> transport, const ScipClientOptions& options)
-    : transport_(std::move(transport)), options_(options) {
+ScipClient::ScipClient(std::unique_ptr<ByteStream> transport, const ScipClientOptions& options)
+    : transport_(std::move(transport)), options_(options), clock_(options.clock_offset_scans) {
   if (!transport_) throw UsageError("SCIP client without a transport");
   options_.Validate();
   Handshake();
@@ -66,7 +60,7 @@ std::string ScipClient::ReadLine(TimestampNs deadline_ns) {
     }
     const TimestampNs now = HostNowNs();
     if (now >= deadline_ns) {
-      throw ScipDisconnectedError(uri() + ": sensor stopped answering (timeout)");
+      throw SensorDisconnectedError(uri() + ": sensor stopped answering (timeout)");
     }
     char chunk[4096];
     const std::size_t n = transport_->Read(chunk, sizeof chunk, ToSeconds(deadline_ns - now));
@@ -109,7 +103,7 @@ void ScipClient::ThrowIfQtIgnored(int frames_skipped) const {
   // (5 s at 40 Hz) did not take the command.
   constexpr int kMaxFramesAfterQt = 200;
   if (frames_skipped >= kMaxFramesAfterQt) {
-    throw ScipDisconnectedError(uri() + ": sensor keeps streaming and does not answer QT");
+    throw SensorDisconnectedError(uri() + ": sensor keeps streaming and does not answer QT");
   }
 }
 
@@ -139,16 +133,6 @@ void ScipClient::StartMeasurement() {
                         reply.status.code + "\"");
   }
   measuring_ = true;
-}
-
-TimestampNs ScipClient::MapToHost(std::int64_t sensor_ms, TimestampNs arrival_ns) {
-  const TimestampNs sensor_ns = sensor_ms * 1'000'000;
-  if (offset_samples_ < options_.clock_offset_scans) {
-    const TimestampNs sample = arrival_ns - sensor_ns;
-    clock_offset_ns_ = clock_offset_ns_ ? std::min(*clock_offset_ns_, sample) : sample;
-    ++offset_samples_;
-  }
-  return sensor_ns + *clock_offset_ns_;
 }
 
 ScipScan ScipClient::ReadScan() {
@@ -182,7 +166,7 @@ ScipScan ScipClient::ReadScan() {
     out.sensor_time_ms = data.timestamp_ms;
     out.sensor_time_unwrapped_ms = unwrapped_sensor_ms_;
     out.scan = ScipToLaserScan(handshake_.sensor, request_, data.ranges_mm,
-                               MapToHost(unwrapped_sensor_ms_, out.arrival_ns));
+                               clock_.ToHost(unwrapped_sensor_ms_ * 1'000'000, out.arrival_ns));
     return out;
   }
 }

@@ -4,7 +4,7 @@
 // time, and QT to stop.
 //
 // Errors: BadInputError for malformed replies and checksum errors (the message names the URI and
-// quotes the line), ScipDisconnectedError (capture/scip_transport.hpp) when the sensor goes away
+// quotes the line), SensorDisconnectedError (capture/byte_stream.hpp) when the sensor goes away
 // or stops answering, so a recorder can reconnect. A sensor that reports an error status
 // (hardware trouble, rejected command) raises BadInputError quoting the status.
 //
@@ -21,8 +21,9 @@
 #include <string>
 #include <vector>
 
+#include "capture/byte_stream.hpp"
+#include "capture/clock_offset.hpp"
 #include "capture/scip_protocol.hpp"
-#include "capture/scip_transport.hpp"
 #include "core/laser_scan.hpp"
 #include "core/time.hpp"
 
@@ -33,7 +34,7 @@ struct ScipClientOptions {
   double scan_timeout_s = 1.0;   // longest wait for the next scan frame
   int cluster_count = 1;         // adjacent steps merged into one reading
   int clock_offset_scans = 20;   // scans over which the host–sensor clock offset is estimated
-  ScipTransportOptions transport;
+  ByteStreamOptions transport;
 
   void Validate() const;
 };
@@ -53,10 +54,11 @@ struct ScipScan {
 
 class ScipClient {
  public:
-  // Opens `uri` (see OpenScipTransport) and performs the handshake.
+  // Opens `uri`, "scip://HOST:PORT" or "scip:/DEVICE" (see OpenByteStream), and performs the
+  // handshake.
   explicit ScipClient(const std::string& uri, const ScipClientOptions& options = {});
   // Uses an already open transport and performs the handshake.
-  ScipClient(std::unique_ptr<ScipTransport> transport, const ScipClientOptions& options = {});
+  ScipClient(std::unique_ptr<ByteStream> transport, const ScipClientOptions& options = {});
   ~ScipClient();
   ScipClient(const ScipClient&) = delete;
   ScipClient& operator=(const ScipClient&) = delete;
@@ -71,11 +73,13 @@ class ScipClient {
   // Sends QT, skipping scan frames still on their way, and waits for its reply.
   void Stop();
 
-  std::optional<TimestampNs> clock_offset_ns() const { return clock_offset_ns_; }
+  std::optional<TimestampNs> clock_offset_ns() const {
+    return clock_.known() ? std::optional(clock_.offset_ns()) : std::nullopt;
+  }
 
  private:
   void Handshake();
-  // Throws ScipDisconnectedError once too many frames came after a QT.
+  // Throws SensorDisconnectedError once too many frames came after a QT.
   void ThrowIfQtIgnored(int frames_skipped) const;
   // Sends `command` + LF and returns the checked reply.
   ScipReply Transact(const std::string& command);
@@ -84,9 +88,8 @@ class ScipClient {
   std::vector<std::string> ReadReplyLines(double timeout_s, TimestampNs* first_line_ns = nullptr);
   std::string ReadLine(TimestampNs deadline_ns);
   std::string Context(const std::string& command) const;
-  TimestampNs MapToHost(std::int64_t sensor_ms, TimestampNs arrival_ns);
 
-  std::unique_ptr<ScipTransport> transport_;
+  std::unique_ptr<ByteStream> transport_;
   ScipClientOptions options_;
   ScipHandshake handshake_;
   ScipRangeRequest request_;
@@ -95,8 +98,7 @@ class ScipClient {
   std::string buffer_;  // bytes received but not yet consumed
   std::optional<std::uint32_t> last_sensor_ms_;
   std::int64_t unwrapped_sensor_ms_ = 0;
-  std::optional<TimestampNs> clock_offset_ns_;
-  int offset_samples_ = 0;
+  ClockOffset clock_;
 };
 
 }  // namespace littermap

@@ -9,7 +9,7 @@
 #include "capture/image_codec.hpp"
 #include "capture/message_header.hpp"
 #include "capture/output_guard.hpp"
-#include "capture/sim_messages.hpp"
+#include "capture/sensor_messages.hpp"
 #include "capture/topics.hpp"
 #include "sim/ground_truth.hpp"
 #include "sim/instance_masks.hpp"
@@ -57,7 +57,7 @@ class RunRecorder {
   void Run(SimRecordResult& result) {
     AddTopics();
     writer_.WriteMessage(topics::kTfStatic, start_ns_,
-                         sim_messages::StaticTransforms(start_ns_, simulation_));
+                         sensor_messages::StaticTransforms(start_ns_, simulation_));
     const auto& states = simulation_.states();
     for (std::size_t i = 0; i < states.size(); ++i) {
       const double t = static_cast<double>(i) / spec_.robot.odometry.rate_hz;
@@ -67,9 +67,9 @@ class RunRecorder {
       const TimestampNs stamp = start_ns_ + FromSeconds(t);
       writer_.WriteMessage(
           topics::kOdometry, stamp,
-          sim_messages::Odometry(stamp,
-                                 Between(simulation_.odometry().front(), simulation_.odometry()[i]),
-                                 states[i]));
+          sensor_messages::Odometry(
+              stamp, Between(simulation_.odometry().front(), simulation_.odometry()[i]),
+              states[i].linear_mps, states[i].angular_radps));
       WriteImuUpTo(t);
       WriteScansUpTo(t);
     }
@@ -102,7 +102,8 @@ class RunRecorder {
          ++imu_) {
       const sim::ImuSample sample = simulation_.Imu(imu_);
       const TimestampNs stamp = start_ns_ + FromSeconds(sample.t_s);
-      writer_.WriteMessage(topics::kImu, stamp, sim_messages::Imu(stamp, sample, tilt_sigma_rad));
+      writer_.WriteMessage(topics::kImu, stamp,
+                           sensor_messages::Imu(stamp, sample, tilt_sigma_rad));
     }
   }
 
@@ -110,7 +111,7 @@ class RunRecorder {
     for (; scan_ < simulation_.scan_count() && simulation_.ScanTime(scan_) <= t + 1e-9; ++scan_) {
       const LaserScan laser = simulation_.Scan(scan_);
       const TimestampNs stamp = start_ns_ + laser.stamp_ns;
-      writer_.WriteMessage(topics::kScan, stamp, sim_messages::Scan(stamp, laser));
+      writer_.WriteMessage(topics::kScan, stamp, sensor_messages::Scan(stamp, laser));
     }
   }
 
@@ -130,7 +131,7 @@ class RunRecorder {
     const auto render_start = Clock::now();
     const sim::RgbdRender render = camera_.Render(simulation_.TrueOpticalPose(t), k);
     render_s_ += SecondsSince(render_start);
-    const msg::CameraInfo info = sim_messages::CameraInfo(camera_.options().intrinsics, header);
+    const msg::CameraInfo info = sensor_messages::CameraInfo(camera_.options().intrinsics, header);
     writer_.WriteMessage(topics::kCameraInfo, stamp, info);
     writer_.WriteMessage(topics::kColor, stamp, EncodeColorJpeg(render.colour_bgr, header, codec_));
     writer_.WriteMessage(topics::kDepthCameraInfo, stamp, info);

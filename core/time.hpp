@@ -1,6 +1,7 @@
 #pragma once
 // Time stamps: signed nanoseconds since the Unix epoch, as rosbag2 stores them.
 
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <ctime>
@@ -16,6 +17,13 @@ inline double ToSeconds(TimestampNs t) { return static_cast<double>(t) * 1e-9; }
 
 inline TimestampNs FromSeconds(double seconds) {
   return static_cast<TimestampNs>(std::llround(seconds * 1e9));
+}
+
+// The host's wall clock, Unix epoch: the receive time of live sensor data.
+inline TimestampNs HostNowNs() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(
+             std::chrono::system_clock::now().time_since_epoch())
+      .count();
 }
 
 // Unix seconds as UTC text for people, with a strftime format ("%Y-%m-%d %H:%M" by default).

@@ -73,16 +73,6 @@ void ReadNatural(YamlFields fields, NaturalSpec& natural) {
   fields.Finish();
 }
 
-void ReadMount(YamlFields fields, MountSpec& mount) {
-  fields.Read("x_m", mount.x_m);
-  fields.Read("y_m", mount.y_m);
-  fields.Read("z_m", mount.z_m);
-  fields.Read("roll_deg", mount.roll_deg);
-  fields.Read("pitch_deg", mount.pitch_deg);
-  fields.Read("yaw_deg", mount.yaw_deg);
-  fields.Finish();
-}
-
 void ReadCamera(YamlFields fields, CameraSpec& camera) {
   fields.Read("rate_hz", camera.rate_hz);
   fields.Read("clock_offset_ms", camera.clock_offset_ms);
@@ -238,6 +228,16 @@ WorldSpec LoadWorldSpec(const std::filesystem::path& path) {
   std::ostringstream text;
   text << in.rdbuf();
   return ParseWorldSpec(text.str(), path);
+}
+
+void ReadMount(YamlFields fields, MountSpec& mount) {
+  fields.Read("x_m", mount.x_m);
+  fields.Read("y_m", mount.y_m);
+  fields.Read("z_m", mount.z_m);
+  fields.Read("roll_deg", mount.roll_deg);
+  fields.Read("pitch_deg", mount.pitch_deg);
+  fields.Read("yaw_deg", mount.yaw_deg);
+  fields.Finish();
 }
 
 }  // namespace littermap::sim

@@ -75,6 +75,10 @@ struct MountSpec {  // a sensor's pose on base_link; rpy as in REP 103
   double roll_deg = 0, pitch_deg = 0, yaw_deg = 0;
 };
 
+class YamlFields;
+// Reads x_m, y_m, z_m, roll_deg, pitch_deg, yaw_deg (each optional) of a mount mapping.
+void ReadMount(YamlFields fields, MountSpec& mount);
+
 struct LaserSpec {
   std::string preset = "urg-04lx";  // urg-04lx | utm-30lx
   double rate_hz = 10;              // 10..40

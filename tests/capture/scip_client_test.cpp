@@ -18,7 +18,7 @@
 #include "capture/scip_client.hpp"
 #include "capture/scip_protocol.hpp"
 #include "core/error.hpp"
-#include "scip_emulator.hpp"
+#include "support/scip_emulator.hpp"
 
 namespace littermap {
 namespace {
@@ -34,7 +34,7 @@ template <typename F>
 std::string BadInputMessage(F&& f) {
   try {
     f();
-  } catch (const ScipDisconnectedError& e) {
+  } catch (const SensorDisconnectedError& e) {
     ADD_FAILURE() << "disconnect instead of bad input: " << e.what();
     return "";
   } catch (const BadInputError& e) {
@@ -315,7 +315,7 @@ TEST_P(ScipClientLink, DisconnectMidRunIsReportedAsADisconnect) {
   try {
     client.ReadScan();
     ADD_FAILURE() << "no error after the disconnect";
-  } catch (const ScipDisconnectedError& e) {
+  } catch (const SensorDisconnectedError& e) {
     EXPECT_NE(std::string(e.what()).find(emulator.uri()), std::string::npos) << e.what();
   }
 }
@@ -336,7 +336,7 @@ TEST(ScipClient, ReconnectsAfterADisconnect) {
     client.StartMeasurement();
     client.ReadScan();
     client.ReadScan();
-    EXPECT_THROW(client.ReadScan(), ScipDisconnectedError);
+    EXPECT_THROW(client.ReadScan(), SensorDisconnectedError);
   }  // the destructor's QT meets a closed connection and stays quiet
   ScipClient again(emulator.uri(), FastOptions());
   again.StartMeasurement();
@@ -373,7 +373,7 @@ TEST(ScipClient, ASensorThatIgnoresQtIsADisconnectNotAHang) {
   try {
     client.Stop();
     FAIL() << "Stop returned although the sensor never answered QT";
-  } catch (const ScipDisconnectedError& e) {
+  } catch (const SensorDisconnectedError& e) {
     EXPECT_NE(std::string(e.what()).find("does not answer QT"), std::string::npos) << e.what();
   }
 }
@@ -473,10 +473,10 @@ TEST(ScipClient, SilentSensorTimesOutAsADisconnect) {
   const std::string uri = "scip://127.0.0.1:" + std::to_string(ntohs(address.sin_port));
   ScipClientOptions options = FastOptions();
   options.reply_timeout_s = 0.1;
-  EXPECT_THROW(ScipClient(uri, options), ScipDisconnectedError);
+  EXPECT_THROW(ScipClient(uri, options), SensorDisconnectedError);
   ::close(fd);
   // Nobody listening any more: connection refused.
-  EXPECT_THROW(ScipClient(uri, options), ScipDisconnectedError);
+  EXPECT_THROW(ScipClient(uri, options), SensorDisconnectedError);
 }
 
 TEST(ScipClient, RejectsOtherUris) {

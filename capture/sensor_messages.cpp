@@ -1,4 +1,4 @@
-#include "capture/sim_messages.hpp"
+#include "capture/sensor_messages.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -6,13 +6,15 @@
 #include "capture/message_header.hpp"
 #include "capture/topics.hpp"
 
-namespace littermap::sim_messages {
+namespace littermap::sensor_messages {
 namespace {
 
 msg::Quaternion ToMsg(const Eigen::Quaterniond& q) { return {q.x(), q.y(), q.z(), q.w()}; }
 
-msg::TransformStamped Transform(TimestampNs stamp_ns, const char* child,
-                                const Eigen::Isometry3d& T_base_child) {
+}  // namespace
+
+msg::TransformStamped TransformFromBase(TimestampNs stamp_ns, const std::string& child,
+                                        const Eigen::Isometry3d& T_base_child) {
   msg::TransformStamped transform;
   transform.header = MakeHeader(stamp_ns, frames::kBase);
   transform.child_frame_id = child;
@@ -22,23 +24,22 @@ msg::TransformStamped Transform(TimestampNs stamp_ns, const char* child,
   return transform;
 }
 
-}  // namespace
-
 msg::TFMessage StaticTransforms(TimestampNs stamp_ns, const sim::Simulation& simulation) {
-  return msg::TFMessage{{Transform(stamp_ns, frames::kLaser, simulation.T_base_laser()),
-                         Transform(stamp_ns, frames::kCamera, simulation.T_base_optical())}};
+  return msg::TFMessage{
+      {TransformFromBase(stamp_ns, frames::kLaser, simulation.T_base_laser()),
+       TransformFromBase(stamp_ns, frames::kCamera, simulation.T_base_optical())}};
 }
 
-msg::Odometry Odometry(TimestampNs stamp_ns, const PlanarPose& T_odom_base,
-                       const sim::RobotState& state) {
+msg::Odometry Odometry(TimestampNs stamp_ns, const PlanarPose& T_odom_base, double linear_mps,
+                       double angular_radps) {
   msg::Odometry odometry;
   odometry.header = MakeHeader(stamp_ns, frames::kOdom);
   odometry.child_frame_id = frames::kBase;
   odometry.pose.pose.position = {T_odom_base.x_m, T_odom_base.y_m, 0};
   odometry.pose.pose.orientation = {0, 0, std::sin(T_odom_base.theta_rad / 2),
                                     std::cos(T_odom_base.theta_rad / 2)};
-  odometry.twist.twist.linear.x = state.linear_mps;
-  odometry.twist.twist.angular.z = state.angular_radps;
+  odometry.twist.twist.linear.x = linear_mps;
+  odometry.twist.twist.angular.z = angular_radps;
   return odometry;
 }
 
@@ -85,4 +86,4 @@ msg::CameraInfo CameraInfo(const sim::PinholeCamera& camera, const msg::Header& 
   return info;
 }
 
-}  // namespace littermap::sim_messages
+}  // namespace littermap::sensor_messages

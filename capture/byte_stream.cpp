@@ -1,4 +1,4 @@
-#include "capture/scip_transport.hpp"
+#include "capture/byte_stream.hpp"
 
 #include <fcntl.h>
 #include <netdb.h>
@@ -25,7 +25,7 @@ int TimeoutMs(double timeout_s) {
 std::string Errno() { return std::strerror(errno); }
 
 // A file descriptor driven with poll(): a TCP socket or a serial/pseudo-terminal device.
-class FdTransport : public ScipTransport {
+class FdTransport : public ByteStream {
  public:
   FdTransport(int fd, bool is_socket, std::string uri)
       : fd_(fd), is_socket_(is_socket), uri_(std::move(uri)) {}
@@ -41,11 +41,11 @@ class FdTransport : public ScipTransport {
       if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
         pollfd p{fd_, POLLOUT, 0};
         if (::poll(&p, 1, 1000) <= 0 || (p.revents & (POLLERR | POLLHUP)) != 0) {
-          throw ScipDisconnectedError(uri_ + ": sensor does not accept data");
+          throw SensorDisconnectedError(uri_ + ": sensor does not accept data");
         }
         continue;
       }
-      if (n <= 0) throw ScipDisconnectedError(uri_ + ": write failed: " + Errno());
+      if (n <= 0) throw SensorDisconnectedError(uri_ + ": write failed: " + Errno());
       bytes.remove_prefix(static_cast<std::size_t>(n));
     }
   }
@@ -55,13 +55,13 @@ class FdTransport : public ScipTransport {
       pollfd p{fd_, POLLIN, 0};
       const int ready = ::poll(&p, 1, TimeoutMs(timeout_s));
       if (ready < 0 && errno == EINTR) continue;
-      if (ready < 0) throw ScipDisconnectedError(uri_ + ": poll failed: " + Errno());
+      if (ready < 0) throw SensorDisconnectedError(uri_ + ": poll failed: " + Errno());
       if (ready == 0) return 0;
       const ssize_t n = ::read(fd_, buffer, size);
       if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
       // A pseudo-terminal whose other side closed reads EIO; a socket reads 0.
-      if (n < 0) throw ScipDisconnectedError(uri_ + ": connection lost: " + Errno());
-      if (n == 0) throw ScipDisconnectedError(uri_ + ": connection closed by the sensor");
+      if (n < 0) throw SensorDisconnectedError(uri_ + ": connection lost: " + Errno());
+      if (n == 0) throw SensorDisconnectedError(uri_ + ": connection closed by the sensor");
       return static_cast<std::size_t>(n);
     }
   }
@@ -81,7 +81,7 @@ int ConnectTcp(const std::string& host, const std::string& port, const std::stri
   hints.ai_socktype = SOCK_STREAM;
   addrinfo* found = nullptr;
   if (const int rc = ::getaddrinfo(host.c_str(), port.c_str(), &hints, &found); rc != 0) {
-    throw ScipDisconnectedError(uri + ": cannot resolve host: " + ::gai_strerror(rc));
+    throw SensorDisconnectedError(uri + ": cannot resolve host: " + ::gai_strerror(rc));
   }
   std::string failure = "no address";
   for (addrinfo* a = found; a != nullptr; a = a->ai_next) {
@@ -108,7 +108,7 @@ int ConnectTcp(const std::string& host, const std::string& port, const std::stri
     ::close(fd);
   }
   ::freeaddrinfo(found);
-  throw ScipDisconnectedError(uri + ": cannot connect: " + failure);
+  throw SensorDisconnectedError(uri + ": cannot connect: " + failure);
 }
 
 speed_t BaudConstant(int baud, const std::string& uri) {
@@ -133,7 +133,7 @@ speed_t BaudConstant(int baud, const std::string& uri) {
 int OpenSerial(const std::string& path, const std::string& uri, int baud) {
   const speed_t speed = BaudConstant(baud, uri);
   const int fd = ::open(path.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) throw ScipDisconnectedError(uri + ": cannot open: " + Errno());
+  if (fd < 0) throw SensorDisconnectedError(uri + ": cannot open: " + Errno());
   termios tio{};
   if (::tcgetattr(fd, &tio) != 0) {
     const std::string why = Errno();
@@ -149,7 +149,7 @@ int OpenSerial(const std::string& path, const std::string& uri, int baud) {
   if (::tcsetattr(fd, TCSANOW, &tio) != 0) {
     const std::string why = Errno();
     ::close(fd);
-    throw ScipDisconnectedError(uri + ": cannot set raw mode: " + why);
+    throw SensorDisconnectedError(uri + ": cannot set raw mode: " + why);
   }
   ::tcflush(fd, TCIFLUSH);
   return fd;
@@ -157,15 +157,13 @@ int OpenSerial(const std::string& path, const std::string& uri, int baud) {
 
 }  // namespace
 
-std::unique_ptr<ScipTransport> OpenScipTransport(const std::string& uri,
-                                                 const ScipTransportOptions& options) {
-  constexpr std::string_view kTcp = "scip://";
-  constexpr std::string_view kSerial = "scip:/";
-  if (uri.starts_with(kTcp)) {
-    const std::string address = uri.substr(kTcp.size());
+std::unique_ptr<ByteStream> OpenByteStream(const std::string& uri, const ByteStreamSchemes& schemes,
+                                           const ByteStreamOptions& options) {
+  if (uri.starts_with(schemes.tcp)) {
+    const std::string address = uri.substr(schemes.tcp.size());
     const std::size_t colon = address.rfind(':');
     if (colon == std::string::npos || colon == 0 || colon + 1 == address.size()) {
-      throw UsageError("laser URI " + uri + " lacks HOST:PORT");
+      throw UsageError(std::string(schemes.device) + " URI " + uri + " lacks HOST:PORT");
     }
     std::string host = address.substr(0, colon);
     if (host.size() > 2 && host.front() == '[' && host.back() == ']') {
@@ -174,12 +172,15 @@ std::unique_ptr<ScipTransport> OpenScipTransport(const std::string& uri,
     const int fd = ConnectTcp(host, address.substr(colon + 1), uri, options.connect_timeout_s);
     return std::make_unique<FdTransport>(fd, true, uri);
   }
-  if (uri.starts_with(kSerial)) {
-    const std::string path = uri.substr(kSerial.size() - 1);
+  if (uri.starts_with(schemes.serial) && uri.size() > schemes.serial.size() &&
+      uri[schemes.serial.size()] == '/') {
+    const std::string path = uri.substr(schemes.serial.size());
     return std::make_unique<FdTransport>(OpenSerial(path, uri, options.serial_baud_rate), false,
                                          uri);
   }
-  throw UsageError("laser URI " + uri + " is neither scip://HOST:PORT nor scip:/DEVICE");
+  throw UsageError(std::string(schemes.device) + " URI " + uri + " is neither " +
+                   std::string(schemes.tcp) + "HOST:PORT nor " + std::string(schemes.serial) +
+                   "/DEVICE");
 }
 
 }  // namespace littermap
