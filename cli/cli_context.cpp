@@ -25,8 +25,13 @@ ProgressCallback CliContext::Progress() {
   };
 }
 
-void CliContext::Warn(const std::string& message) const {
+void CliContext::Status(const std::string& line) {
+  if (!quiet) display_.Status(line);
+}
+
+void CliContext::Warn(const std::string& message) {
   if (quiet) return;
+  display_.Finish();
   std::fprintf(stderr, "warning: %s\n", message.c_str());
 }
 

@@ -22,7 +22,8 @@ class CliContext {
   CLI::App* AddCommand(CLI::App& parent, const std::string& name, const std::string& description);
 
   ProgressCallback Progress();
-  void Warn(const std::string& message) const;
+  void Status(const std::string& line);  // see ProgressDisplay::Status; nothing with --quiet
+  void Warn(const std::string& message);
   void FinishProgress();
 
  private:

@@ -1,15 +1,27 @@
-// littermap capture --camera URI --laser URI [--odometry URI] -o BAG [--duration S]
-//                   [--truth DIR] [--seed N] [--run-seed N] [--route NAME]
-//                   [--contact-sheet FILE.png]
-// Records a run. This version knows one source, the park simulator: sim:WORLD.yaml for every
-// sensor, which makes it `littermap simulate` under the field crew's command. Real sensors
-// (OpenNI2 RGB-D, SCIP laser) are named in the error so a script fails loudly.
+// littermap capture [--camera URI] [--laser URI] [--odometry URI] -o BAG [--robot ROBOT.yaml]
+//                   [--duration S] [--camera-mode WxH@FPS] [--min-free-disk-mb N]
+//                   [--truth DIR] [--seed N] [--run-seed N] [--route NAME] [--contact-sheet PNG]
+// Records a run from the robot's sensors (capture/recorder.hpp): an OpenNI2 RGB-D camera, a
+// SCIP 2.0 laser and the base's wheel odometry, each optional; or from the park simulator when
+// the sources are sim:WORLD.yaml. SIGINT and SIGTERM finish the bag; a second one kills.
 
+#include <signal.h>
+
+#include <atomic>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <regex>
 #include <string>
+#include <vector>
 
+#include "capture/byte_stream.hpp"
+#include "capture/odometry_source.hpp"
+#include "capture/openni2_camera.hpp"
+#include "capture/recorder.hpp"
+#include "capture/robot_description.hpp"
+#include "capture/scip_laser_source.hpp"
 #include "cli/simulate_run.hpp"
 #include "core/error.hpp"
 
@@ -20,59 +32,223 @@ constexpr std::string_view kSimScheme = "sim:";
 
 struct CaptureArguments {
   std::string camera, laser, odometry;
+  std::string robot;
+  std::string camera_mode = "640x480@30";
+  double min_free_disk_mb = 256;
+  bool list_cameras = false;
   SimulateRequest simulate;
 };
 
-// The world file of a sim: source; a UsageError naming the option for anything else.
-std::filesystem::path SimWorld(const std::string& option, const std::string& uri) {
-  if (!uri.starts_with(kSimScheme) || uri.size() == kSimScheme.size()) {
-    throw UsageError(option + " '" + uri +
-                     "': this version captures only from the park simulator "
-                     "(sim:WORLD.yaml); real sensor sources are not supported yet");
+std::atomic<bool> g_stop_requested{false};
+
+extern "C" void RequestStop(int) { g_stop_requested.store(true); }
+
+// SIGINT/SIGTERM set the stop flag while alive; the first one resets the handler, so a second
+// signal ends a recorder that does not stop.
+class StopOnSignals {
+ public:
+  StopOnSignals() {
+    g_stop_requested.store(false);
+    struct sigaction action {};
+    action.sa_handler = RequestStop;
+    action.sa_flags = SA_RESETHAND;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &old_int_);
+    sigaction(SIGTERM, &action, &old_term_);
   }
-  return uri.substr(kSimScheme.size());
-}
+  ~StopOnSignals() {
+    sigaction(SIGINT, &old_int_, nullptr);
+    sigaction(SIGTERM, &old_term_, nullptr);
+  }
+  StopOnSignals(const StopOnSignals&) = delete;
+  StopOnSignals& operator=(const StopOnSignals&) = delete;
+
+ private:
+  struct sigaction old_int_ {};
+  struct sigaction old_term_ {};
+};
+
+bool IsSim(const std::string& uri) { return uri.starts_with(kSimScheme); }
+bool IsNone(const std::string& uri) { return uri.empty() || uri == "none"; }
 
 bool SameFile(const std::filesystem::path& a, const std::filesystem::path& b) {
   std::error_code error;
   return std::filesystem::weakly_canonical(a, error) == std::filesystem::weakly_canonical(b, error);
 }
 
-void RunCapture(CaptureArguments arguments, CliContext& context) {
-  const std::filesystem::path world = SimWorld("--camera", arguments.camera);
-  std::optional<std::pair<std::string, std::string>> others[] = {
-      std::make_pair(std::string("--laser"), arguments.laser),
-      arguments.odometry.empty()
-          ? std::nullopt
-          : std::optional(std::make_pair(std::string("--odometry"), arguments.odometry))};
-  for (const auto& other : others) {
-    if (!other) continue;
-    if (!SameFile(SimWorld(other->first, other->second), world)) {
-      throw UsageError(other->first + " '" + other->second + "' and --camera '" + arguments.camera +
-                       "' must simulate the same world");
+// All given sources are sim:WORLD.yaml of one world (camera and laser both given).
+void RunSimulatedCapture(CaptureArguments& arguments, CliContext& context) {
+  const std::string world = arguments.camera.substr(kSimScheme.size());
+  if (world.empty()) throw UsageError("--camera '" + arguments.camera + "' names no world file");
+  const std::pair<const char*, const std::string*> others[] = {{"--laser", &arguments.laser},
+                                                               {"--odometry", &arguments.odometry}};
+  for (const auto& [option, uri] : others) {
+    if (IsNone(*uri) && std::string(option) == "--odometry") continue;
+    if (!IsSim(*uri) || !SameFile(uri->substr(kSimScheme.size()), world)) {
+      throw UsageError(std::string(option) + " '" + *uri + "' and --camera '" + arguments.camera +
+                       "' must simulate the same world (a simulated and a real sensor do not "
+                       "record together)");
     }
   }
-  arguments.simulate.world = world.string();
+  arguments.simulate.world = world;
   RunSimulate(arguments.simulate, context);
+}
+
+Openni2CameraOptions ParseCameraMode(const std::string& text) {
+  static const std::regex kMode(R"((\d{2,5})x(\d{2,5})@(\d{1,3}))");
+  std::smatch match;
+  if (!std::regex_match(text, match, kMode)) {
+    throw UsageError("--camera-mode '" + text + "': expected WIDTHxHEIGHT@FPS, e.g. 640x480@30");
+  }
+  Openni2CameraOptions options;
+  options.width = std::stoi(match[1]);
+  options.height = std::stoi(match[2]);
+  options.fps = std::stoi(match[3]);
+  options.Validate();
+  return options;
+}
+
+std::string FormatStatus(const RecorderStatus& status) {
+  std::string line;
+  char text[160];
+  std::snprintf(text, sizeof text, "recording %4.0f s", status.elapsed_s);
+  line += text;
+  for (const SourceStatus& source : status.sources) {
+    if (source.connected) {
+      std::snprintf(text, sizeof text, " | %s %.1f Hz", source.name.c_str(), source.rate_hz);
+    } else {
+      std::snprintf(text, sizeof text, " | %s LOST", source.name.c_str());
+    }
+    line += text;
+    if (source.dropped > 0) line += " " + std::to_string(source.dropped) + " dropped";
+    if (source.queue_depth > 1) line += " q" + std::to_string(source.queue_depth);
+  }
+  std::snprintf(text, sizeof text, " | bag %.0f MB, disk %.1f GB free",
+                static_cast<double>(status.bag_bytes) / 1e6,
+                static_cast<double>(status.disk_free_bytes) / 1e9);
+  return line + text;
+}
+
+void RunRealCapture(const CaptureArguments& arguments, CliContext& context) {
+  const Openni2CameraOptions camera_options = ParseCameraMode(arguments.camera_mode);
+  std::vector<std::unique_ptr<SensorSource>> sources;
+  if (!IsNone(arguments.camera)) {
+    sources.push_back(std::make_unique<Openni2Camera>(arguments.camera, camera_options));
+  }
+  if (!IsNone(arguments.laser))
+    sources.push_back(std::make_unique<ScipLaserSource>(arguments.laser));
+  if (!IsNone(arguments.odometry)) {
+    sources.push_back(std::make_unique<OdometrySource>(arguments.odometry));
+  }
+  if (sources.empty()) {
+    throw UsageError("nothing to record: give --camera, --laser or --odometry");
+  }
+  msg::TFMessage tf_static;
+  if (!arguments.robot.empty()) {
+    tf_static = StaticTransforms(HostNowNs(), ReadRobotDescription(arguments.robot));
+  } else {
+    context.Warn(
+        "no --robot description: the bag has no /tf_static, and later stages place "
+        "the sensors at base_link");
+  }
+
+  RecorderOptions options;
+  if (arguments.simulate.duration_s) {
+    if (!(*arguments.simulate.duration_s > 0)) throw UsageError("--duration: must be positive");
+    options.max_duration_s = *arguments.simulate.duration_s;
+  }
+  if (!(arguments.min_free_disk_mb >= 0)) throw UsageError("--min-free-disk-mb: must be >= 0");
+  options.min_free_disk_bytes = static_cast<std::uint64_t>(arguments.min_free_disk_mb * 1048576.0);
+
+  StopOnSignals signals;
+  const RecordingResult result =
+      Record(arguments.simulate.bag, std::move(sources), tf_static, options, g_stop_requested,
+             [&context](const RecorderStatus& status) {
+               for (const std::string& event : status.new_events) context.Warn(event);
+               context.Status(FormatStatus(status));
+             });
+  context.FinishProgress();
+
+  std::printf("%s: %s after %.1f s, %llu messages\n", arguments.simulate.bag.c_str(),
+              result.stop_reason.c_str(), result.duration_s,
+              static_cast<unsigned long long>(result.messages));
+  for (const SourceStatus& source : result.sources) {
+    std::printf(
+        "  %-8s %s: %llu received, %llu written, %llu dropped, %llu malformed, %llu "
+        "disconnects, %.1f s without data, queue max %zu\n",
+        source.name.c_str(), source.uri.c_str(), static_cast<unsigned long long>(source.received),
+        static_cast<unsigned long long>(source.written),
+        static_cast<unsigned long long>(source.dropped),
+        static_cast<unsigned long long>(source.malformed),
+        static_cast<unsigned long long>(source.disconnects), source.gap_s, source.max_queue_depth);
+  }
+  if (result.stop == RecordingStop::kWriteFailed) {
+    throw InternalError(arguments.simulate.bag + ": " + result.stop_reason +
+                        " (the bag keeps everything written before)");
+  }
+}
+
+void RunCapture(CaptureArguments arguments, CliContext& context) {
+  if (arguments.list_cameras) {
+    const std::vector<std::string> devices = Openni2Camera::ListDevices();
+    for (const std::string& device : devices) std::printf("openni2:%s\n", device.c_str());
+    if (devices.empty()) std::printf("no OpenNI2 device found\n");
+    return;
+  }
+  if (arguments.simulate.bag.empty()) throw UsageError("--output is required");
+  const bool any_sim =
+      IsSim(arguments.camera) || IsSim(arguments.laser) || IsSim(arguments.odometry);
+  if (any_sim) {
+    if (!IsSim(arguments.camera)) {
+      throw UsageError("--camera '" + arguments.camera +
+                       "': a simulated capture needs --camera sim:WORLD.yaml as well");
+    }
+    RunSimulatedCapture(arguments, context);
+    return;
+  }
+  const std::pair<const char*, const std::string*> sim_only[] = {
+      {"--truth", &arguments.simulate.truth},
+      {"--route", &arguments.simulate.route},
+      {"--contact-sheet", &arguments.simulate.contact_sheet}};
+  for (const auto& [option, value] : sim_only) {
+    if (!value->empty()) throw UsageError(std::string(option) + " works with sim: sources only");
+  }
+  if (arguments.simulate.seed || arguments.simulate.run_seed) {
+    throw UsageError("--seed and --run-seed work with sim: sources only");
+  }
+  RunRealCapture(arguments, context);
 }
 
 }  // namespace
 
 void RegisterCaptureCommand(CLI::App& app, CliContext& context) {
   auto arguments = std::make_shared<CaptureArguments>();
-  CLI::App* capture =
-      context.AddCommand(app, "capture",
-                         "Record a run from the robot's sensors; this version: the park simulator "
-                         "(--camera sim:WORLD.yaml --laser sim:WORLD.yaml)");
-  capture->add_option("--camera", arguments->camera, "RGB-D camera source: sim:WORLD.yaml")
-      ->required();
-  capture->add_option("--laser", arguments->laser, "Laser scanner source: sim:WORLD.yaml")
-      ->required();
+  CLI::App* capture = context.AddCommand(
+      app, "capture",
+      "Record a run from the robot's sensors (OpenNI2 RGB-D camera, SCIP 2.0 laser, wheel "
+      "odometry) or from the park simulator (sim:WORLD.yaml)");
+  capture->add_option("--camera", arguments->camera,
+                      "RGB-D camera: openni2 (first device), openni2:DEVICE_URI, "
+                      "sim:WORLD.yaml or none");
+  capture->add_option("--laser", arguments->laser,
+                      "Laser scanner: scip://HOST:PORT, scip:/dev/ttyACM0, sim:WORLD.yaml or none");
   capture->add_option("--odometry", arguments->odometry,
-                      "Wheel odometry source: sim:WORLD.yaml (default: the camera's)");
-  capture->add_option("-o,--output", arguments->simulate.bag, "Bag directory to create")
-      ->required();
-  capture->add_option("--duration", arguments->simulate.duration_s, "Stop after this many seconds");
+                      "Wheel odometry: tcp://HOST:PORT, serial:/dev/ttyUSB0 ($ODOM line "
+                      "protocol), sim:WORLD.yaml or none");
+  capture->add_option("-o,--output", arguments->simulate.bag, "Bag directory to create");
+  capture->add_option("--robot", arguments->robot,
+                      "Robot description YAML: sensor mounts on base_link, for /tf_static");
+  capture->add_option("--duration", arguments->simulate.duration_s,
+                      "Stop after this many seconds (default: until SIGINT/SIGTERM)");
+  capture
+      ->add_option("--camera-mode", arguments->camera_mode,
+                   "Camera mode WIDTHxHEIGHT@FPS; the nearest the device offers is used")
+      ->capture_default_str();
+  capture
+      ->add_option("--min-free-disk-mb", arguments->min_free_disk_mb,
+                   "Stop cleanly when the disk has less than this left")
+      ->capture_default_str();
+  capture->add_flag("--list-cameras", arguments->list_cameras, "List the OpenNI2 devices and exit");
   capture->add_option("--truth", arguments->simulate.truth,
                       "sim: also write the ground truth into this directory");
   capture->add_option("--seed", arguments->simulate.seed, "sim: random seed");
@@ -80,7 +256,7 @@ void RegisterCaptureCommand(CLI::App& app, CliContext& context) {
                       "sim: seed of sensor noise only (the same park)");
   capture->add_option("--route", arguments->simulate.route, "sim: a named route of the world");
   capture->add_option("--contact-sheet", arguments->simulate.contact_sheet,
-                      "Also write a PNG of sampled colour, depth and laser frames");
+                      "sim: also write a PNG of sampled colour, depth and laser frames");
   capture->callback([arguments, &context] {
     context.run = [arguments, &context] { RunCapture(*arguments, context); };
   });

@@ -42,8 +42,8 @@ void ProgressDisplay::Update(const Progress& progress) {
   }
   std::string bar;
   if (progress.total != 0) {
-    const auto filled = std::min<std::uint64_t>(kBarWidth * progress.done / progress.total,
-                                                kBarWidth);
+    const auto filled =
+        std::min<std::uint64_t>(kBarWidth * progress.done / progress.total, kBarWidth);
     bar.assign(kBarWidth + 3, ' ');
     bar.front() = '[';
     bar[kBarWidth + 1] = ']';
@@ -51,6 +51,22 @@ void ProgressDisplay::Update(const Progress& progress) {
   }
   std::fprintf(stderr, "\r\033[K%s: %s%s", last_task_.c_str(), bar.c_str(),
                Percent(progress).c_str());
+  std::fflush(stderr);
+  bar_open_ = true;
+}
+
+void ProgressDisplay::Status(const std::string& line) {
+  const auto now = std::chrono::steady_clock::now();
+  if (!terminal_) {
+    if (last_draw_ != std::chrono::steady_clock::time_point{} && now - last_draw_ < kLogInterval) {
+      return;
+    }
+    last_draw_ = now;
+    std::fprintf(stderr, "%s\n", line.c_str());
+    return;
+  }
+  last_draw_ = now;
+  std::fprintf(stderr, "\r\033[K%s", line.c_str());
   std::fflush(stderr);
   bar_open_ = true;
 }

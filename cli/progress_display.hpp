@@ -13,6 +13,9 @@ class ProgressDisplay {
  public:
   ProgressDisplay();
   void Update(const Progress& progress);
+  // A status line of a long open-ended task: redrawn in place on a terminal, otherwise printed at
+  // most every few seconds.
+  void Status(const std::string& line);
   void Finish();  // ends a bar line so later output starts on a fresh line
 
  private:

@@ -42,6 +42,16 @@ if(NOT TARGET PCL::features)
                                                 Eigen3::Eigen)
 endif()
 
+# OpenNI2 2.2 (RGB-D cameras, capture/openni2_camera.cpp) ships neither a CMake config nor a
+# pkg-config file; its headers are included as system headers for their warnings.
+find_path(OPENNI2_INCLUDE_DIR OpenNI.h PATH_SUFFIXES openni2 REQUIRED)
+find_library(OPENNI2_LIBRARY NAMES OpenNI2 REQUIRED)
+if(NOT TARGET OpenNI2::OpenNI2)
+  add_library(OpenNI2::OpenNI2 UNKNOWN IMPORTED)
+  set_target_properties(OpenNI2::OpenNI2 PROPERTIES IMPORTED_LOCATION ${OPENNI2_LIBRARY})
+  target_include_directories(OpenNI2::OpenNI2 SYSTEM INTERFACE ${OPENNI2_INCLUDE_DIR})
+endif()
+
 # yaml-cpp 0.7 in Debian 12 exports the plain target name.
 if(NOT TARGET yaml-cpp::yaml-cpp)
   add_library(yaml-cpp::yaml-cpp INTERFACE IMPORTED)

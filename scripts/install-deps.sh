@@ -9,7 +9,7 @@ packages=(
   libeigen3-dev libopencv-dev libsqlite3-dev zlib1g-dev libpng-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libbenchmark-dev libceres-dev libnanoflann-dev
-  libproj-dev libtiff-dev libgeotiff-dev libpcl-dev
+  libproj-dev libtiff-dev libgeotiff-dev libpcl-dev libopenni2-dev
   python3 chromium
 )
 if [[ "${1:-}" == "--ci" ]]; then

@@ -162,14 +162,14 @@ TEST(SimulateCli, CaptureFromSimSourcesIsSimulate) {
   EXPECT_EQ(be32(20), 6 * 240);
 }
 
-TEST(SimulateCli, CaptureFromRealSensorsNamesTheSource) {
+TEST(SimulateCli, CaptureRefusesMixingSimulatedAndRealSensors) {
   testing::TempDir dir;
   const std::string sim = "sim:" + kWorld.string();
   const auto real =
       RunLittermap("capture --camera openni2:// --laser '" + sim + "' -o " + Quote(dir / "bag"));
   EXPECT_EQ(real.exit_code, 1) << real.output;
-  EXPECT_NE(real.output.find("--camera 'openni2://': this version captures only from the park "
-                             "simulator"),
+  EXPECT_NE(real.output.find("--camera 'openni2://': a simulated capture needs --camera "
+                             "sim:WORLD.yaml as well"),
             std::string::npos)
       << real.output;
   const auto laser =

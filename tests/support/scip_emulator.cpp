@@ -1,4 +1,4 @@
-#include "scip_emulator.hpp"
+#include "support/scip_emulator.hpp"
 
 #include <arpa/inet.h>
 #include <fcntl.h>
@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "capture/scip_protocol.hpp"
+#include "support/emulator_links.hpp"
 
 namespace littermap::testing {
 
@@ -26,10 +27,6 @@ std::int64_t NowMs() {
   return std::chrono::duration_cast<std::chrono::milliseconds>(
              std::chrono::steady_clock::now().time_since_epoch())
       .count();
-}
-
-void Check(bool ok, const char* what) {
-  if (!ok) throw std::runtime_error(std::string("SCIP emulator: ") + what + " failed");
 }
 
 // "KEY:VALUE;S", the sum covering the ';' or not.
@@ -53,32 +50,14 @@ std::uint32_t ScipEmulatorRangeMm(int step, int frame) {
 ScipEmulator::ScipEmulator(Link link, const ScipEmulatorOptions& options)
     : link_(link), options_(options) {
   if (link_ == Link::kTcp) {
-    listen_fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-    Check(listen_fd_ >= 0, "socket");
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    address.sin_port = 0;
-    Check(::bind(listen_fd_, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0, "bind");
-    Check(::listen(listen_fd_, 4) == 0, "listen");
-    socklen_t length = sizeof address;
-    Check(::getsockname(listen_fd_, reinterpret_cast<sockaddr*>(&address), &length) == 0,
-          "getsockname");
-    uri_ = "scip://127.0.0.1:" + std::to_string(ntohs(address.sin_port));
+    const LoopbackListener listener = ListenOnLoopback("SCIP emulator");
+    listen_fd_ = listener.fd;
+    uri_ = "scip://127.0.0.1:" + std::to_string(listener.port);
   } else {
-    master_fd_ = ::posix_openpt(O_RDWR | O_NOCTTY | O_CLOEXEC);
-    Check(master_fd_ >= 0, "posix_openpt");
-    Check(::grantpt(master_fd_) == 0 && ::unlockpt(master_fd_) == 0, "grantpt/unlockpt");
-    char name[256];
-    Check(::ptsname_r(master_fd_, name, sizeof name) == 0, "ptsname_r");
-    holder_fd_ = ::open(name, O_RDWR | O_NOCTTY | O_CLOEXEC);
-    Check(holder_fd_ >= 0, "open pty slave");
-    termios tio{};
-    Check(::tcgetattr(holder_fd_, &tio) == 0, "tcgetattr");
-    ::cfmakeraw(&tio);  // no echo of what the emulator writes before the client opens the device
-    Check(::tcsetattr(holder_fd_, TCSANOW, &tio) == 0, "tcsetattr");
-    Check(::fcntl(master_fd_, F_SETFL, O_NONBLOCK) == 0, "fcntl");
-    uri_ = std::string("scip:") + name;
+    const PseudoTerminal terminal = OpenPseudoTerminal("SCIP emulator");
+    master_fd_ = terminal.master_fd;
+    holder_fd_ = terminal.holder_fd;
+    uri_ = "scip:" + terminal.device;
   }
   thread_ = std::thread([this] { Run(); });
 }
