@@ -1,6 +1,6 @@
 # Every third-party library littermap uses, found once, as imported targets.
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
-find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs ml)
+find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs ml features2d calib3d rgbd)
 find_package(SQLite3 REQUIRED)
 find_package(ZLIB REQUIRED)
 find_package(PNG REQUIRED)
