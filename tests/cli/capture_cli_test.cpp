@@ -1,6 +1,7 @@
 // `littermap capture` from emulated sensors (a SCIP 2.0 laser and a robot base on loopback TCP,
-// OpenNI2's DummyDevice camera) as a separate process: stopped by SIGINT it finishes the bag;
-// killed by SIGKILL the bag still holds everything up to its last commit (at most 1 s old).
+// OpenNI2's DummyDevice camera) as a separate process: stopped by SIGINT or SIGTERM it finishes
+// the bag; killed by SIGKILL the bag still holds everything up to its last commit (at most 1 s
+// old).
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
@@ -119,17 +120,35 @@ struct Sensors {
   testing::OdometryEmulator base;
 };
 
-TEST(CaptureCli, SigintFinishesTheBag) {
+// Emulated sensors and a capture process recording them into DIR/run.
+struct Recording {
+  Recording() : capture(sensors.Arguments(dir / "run"), dir / "log.txt") {}
+  // Waits until the recorder reports its first status.
+  ::testing::AssertionResult Started() const {
+    if (!capture.started()) return ::testing::AssertionFailure() << "not started";
+    if (!WaitForLog(capture, "recording", 10s)) {
+      return ::testing::AssertionFailure() << "no status within 10 s\n" << capture.Log();
+    }
+    return ::testing::AssertionSuccess();
+  }
+  std::filesystem::path bag() const { return dir / "run"; }
+
   Sensors sensors;
   testing::TempDir dir;
-  const auto bag = dir / "run";
-  CaptureProcess capture(sensors.Arguments(bag), dir / "log.txt");
-  ASSERT_TRUE(capture.started());
-  ASSERT_TRUE(WaitForLog(capture, "recording", 10s)) << capture.Log();
+  CaptureProcess capture;
+};
+
+class CaptureCliStop : public ::testing::TestWithParam<int> {};
+
+TEST_P(CaptureCliStop, FinishesTheBag) {
+  Recording recording;
+  CaptureProcess& capture = recording.capture;
+  const auto bag = recording.bag();
+  ASSERT_TRUE(recording.Started());
   std::this_thread::sleep_for(2500ms);
-  capture.Signal(SIGINT);
+  capture.Signal(GetParam());
   const std::optional<int> status = capture.Wait(10s);
-  ASSERT_TRUE(status.has_value()) << "still running 10 s after SIGINT\n" << capture.Log();
+  ASSERT_TRUE(status.has_value()) << "still running 10 s after the signal\n" << capture.Log();
   ASSERT_TRUE(WIFEXITED(*status)) << capture.Log();
   EXPECT_EQ(WEXITSTATUS(*status), 0) << capture.Log();
   EXPECT_NE(capture.Log().find("stopped on request"), std::string::npos) << capture.Log();
@@ -145,16 +164,20 @@ TEST(CaptureCli, SigintFinishesTheBag) {
   EXPECT_EQ(counts[topics::kTfStatic], 1u);
 }
 
+INSTANTIATE_TEST_SUITE_P(Signals, CaptureCliStop, ::testing::Values(SIGINT, SIGTERM),
+                         [](const ::testing::TestParamInfo<int>& signal) {
+                           return signal.param == SIGINT ? std::string("Sigint")
+                                                         : std::string("Sigterm");
+                         });
+
 TEST(CaptureCli, SigkillKeepsEverythingButTheLastSecond) {
-  Sensors sensors;
-  testing::TempDir dir;
-  const auto bag = dir / "run";
-  CaptureProcess capture(sensors.Arguments(bag), dir / "log.txt");
-  ASSERT_TRUE(capture.started());
-  ASSERT_TRUE(WaitForLog(capture, "recording", 10s)) << capture.Log();
-  const int scans_before = sensors.laser.frames_sent();
+  Recording recording;
+  CaptureProcess& capture = recording.capture;
+  const auto bag = recording.bag();
+  ASSERT_TRUE(recording.Started());
+  const int scans_before = recording.sensors.laser.frames_sent();
   std::this_thread::sleep_for(3s);
-  const int scans_sent = sensors.laser.frames_sent() - scans_before;
+  const int scans_sent = recording.sensors.laser.frames_sent() - scans_before;
   capture.Signal(SIGKILL);
   ASSERT_TRUE(capture.Wait(5s).has_value());
 
