@@ -159,8 +159,9 @@ class Channel {
         shared_.AddEvent(status_.name + ": lost (" + lost_because + "); reconnecting");
       }
     }
-    if (connected) source_->Disconnect();
-    if (!connected) {
+    if (connected) {
+      source_->Disconnect();
+    } else {
       std::lock_guard lock(shared_.mutex);
       status_.gap_s += SecondsSince(lost_at);
     }

@@ -43,7 +43,7 @@ struct RgbdImage {
 
 struct RgbdAlignerOptions {
   RgbdFeatures features = RgbdFeatures::kOrb;
-  int max_features = 1000;  // matching is quadratic in it: 1000 keeps an alignment near 20 ms
+  int max_features = 1000;     // matching is quadratic in it: 1000 keeps an alignment near 20 ms
   int orb_fast_threshold = 7;  // FAST corner contrast (OpenCV's 20 finds little on grass)
   double ratio_test = 0.8;     // best match distance below this × the second best
   double min_depth_m = 0.2;
