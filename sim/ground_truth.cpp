@@ -109,7 +109,8 @@ json WorldJson(const Simulation& simulation) {
     bumps.push_back({{"center_m", json::array({b.x_m, b.y_m})},
                      {"radius_m", b.radius_m},
                      {"roll_deg", b.roll_deg},
-                     {"pitch_deg", b.pitch_deg}});
+                     {"pitch_deg", b.pitch_deg},
+                     {"slip_deg", b.slip_deg}});
   }
   return {{"name", world.spec.name},
           {"seed", world.spec.seed},

@@ -8,7 +8,8 @@
 namespace littermap::sim {
 
 std::vector<PlanarPose> SimulateOdometry(const std::vector<PlanarPose>& truth,
-                                         const OdometrySpec& spec, std::uint64_t seed) {
+                                         const OdometrySpec& spec, std::uint64_t seed,
+                                         const std::vector<BumpSpec>& bumps) {
   std::vector<PlanarPose> odometry;
   if (truth.empty()) return odometry;
   constexpr double kDegToRad = std::numbers::pi / 180;
@@ -28,6 +29,13 @@ std::vector<PlanarPose> SimulateOdometry(const std::vector<PlanarPose>& truth,
     delta.theta_rad +=
         (spec.yaw_drift_deg_per_m * d + nr * spec.rotation_noise_deg_per_sqrt_m * sqrt_d) *
         kDegToRad;
+    const double mid_x = 0.5 * (truth[i - 1].x_m + truth[i].x_m);
+    const double mid_y = 0.5 * (truth[i - 1].y_m + truth[i].y_m);
+    for (const BumpSpec& bump : bumps) {
+      if (std::hypot(mid_x - bump.x_m, mid_y - bump.y_m) < bump.radius_m) {
+        delta.theta_rad += bump.slip_deg * kDegToRad * d / (2 * bump.radius_m);
+      }
+    }
     odometry.push_back(Compose(odometry.back(), delta));
   }
   return odometry;

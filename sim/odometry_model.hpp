@@ -6,6 +6,7 @@
 // and integrated from the first true pose. The random part's variance grows linearly with the
 // distance driven, whatever the step size (a random walk per metre), so after D metres on a
 // straight line the heading error has mean yaw_drift·D and standard deviation σ_r·√D.
+// On a bump the wheels slip: a step within its radius adds slip_deg · d / (2 · radius) to dθ.
 
 #include <cstdint>
 #include <vector>
@@ -16,6 +17,7 @@
 namespace littermap::sim {
 
 std::vector<PlanarPose> SimulateOdometry(const std::vector<PlanarPose>& truth,
-                                         const OdometrySpec& spec, std::uint64_t seed);
+                                         const OdometrySpec& spec, std::uint64_t seed,
+                                         const std::vector<BumpSpec>& bumps = {});
 
 }  // namespace littermap::sim

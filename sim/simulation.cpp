@@ -54,7 +54,7 @@ Simulation::Simulation(const WorldSpec& spec, const SimulationOptions& options)
   std::vector<PlanarPose> truth;
   truth.reserve(drive_.states.size());
   for (const RobotState& state : drive_.states) truth.push_back(state.pose);
-  odometry_ = SimulateOdometry(truth, spec.robot.odometry, spec.RunSeed());
+  odometry_ = SimulateOdometry(truth, spec.robot.odometry, spec.RunSeed(), spec.bumps);
   LaserSimulatorOptions laser;
   laser.model = LaserPreset(spec.robot.laser.preset);
   laser.range_noise_sigma_m = spec.robot.laser.range_noise_sigma_m;

@@ -159,9 +159,11 @@ void ReadBumps(YamlFields& fields, std::vector<BumpSpec>& bumps) {
     bump_fields.Read("radius_m", bump.radius_m);
     bump_fields.Read("roll_deg", bump.roll_deg);
     bump_fields.Read("pitch_deg", bump.pitch_deg);
+    bump_fields.Read("slip_deg", bump.slip_deg);
     Check(bump_fields, "radius_m", bump.radius_m > 0.05, "must be above 0.05");
     Check(bump_fields, "roll_deg", std::abs(bump.roll_deg) <= 30, "must be within ±30");
     Check(bump_fields, "pitch_deg", std::abs(bump.pitch_deg) <= 30, "must be within ±30");
+    Check(bump_fields, "slip_deg", std::abs(bump.slip_deg) <= 45, "must be within ±45");
     bump_fields.Finish();
     bumps.push_back(bump);
   }

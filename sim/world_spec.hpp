@@ -134,6 +134,9 @@ struct BumpSpec {  // a root or bump on the route that tilts the robot
   double x_m = 0, y_m = 0;
   double radius_m = 0.5;
   double roll_deg = 0, pitch_deg = 0;
+  // Heading error the wheel odometry picks up crossing the bump (a wheel spinning or skidding
+  // on the root), spread over the path within the radius: slip_deg per diameter driven.
+  double slip_deg = 0;
 };
 
 struct TruthSpec {               // ground truth beside the bag (sim/ground_truth.hpp)

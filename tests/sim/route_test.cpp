@@ -120,5 +120,24 @@ TEST(OdometryModel, DriftStatisticsFollowTheConfiguration) {
   EXPECT_NEAR(sigma, 0.3 * std::sqrt(50.0), 0.32);
 }
 
+TEST(OdometryModel, BumpSlipTurnsTheHeadingByItsAngleAcrossTheBump) {
+  std::vector<PlanarPose> truth;
+  for (int i = 0; i <= 1000; ++i) truth.push_back({0.01 * i, 0, 0});  // 10 m straight
+  OdometrySpec exact;
+  exact.scale_error = exact.yaw_drift_deg_per_m = 0;
+  exact.translation_noise_m_per_sqrt_m = exact.rotation_noise_deg_per_sqrt_m = 0;
+  BumpSpec bump;
+  bump.x_m = 5;
+  bump.radius_m = 0.4;
+  bump.slip_deg = 7;
+  const auto odometry = SimulateOdometry(truth, exact, 1, {bump});
+  // Before the bump exact; after it turned by 7° (± one 1 cm step of 0.8 m).
+  EXPECT_NEAR(odometry[400].theta_rad, 0, 1e-12);
+  EXPECT_NEAR(odometry.back().theta_rad / kDeg, 7, 7 * 0.01 / 0.8 + 1e-9);
+  // Off the bump's radius nothing slips.
+  bump.y_m = 0.5;
+  EXPECT_NEAR(SimulateOdometry(truth, exact, 1, {bump}).back().theta_rad, 0, 1e-12);
+}
+
 }  // namespace
 }  // namespace littermap::sim
