@@ -1,0 +1,44 @@
+#include "capture/camera_setup.hpp"
+
+#include "capture/bag_reader.hpp"
+#include "capture/message_header.hpp"
+#include "capture/message_stream.hpp"
+#include "core/error.hpp"
+
+namespace littermap {
+
+CameraSetup ReadCameraSetup(const std::filesystem::path& bag, const CameraSetupTopics& topics) {
+  BagReader reader(bag);
+  for (const std::string& topic : {topics.camera_info, topics.tf_static}) {
+    bool present = false;
+    for (const auto& info : reader.info().topics) present = present || info.name == topic;
+    if (!present) throw BadInputError(bag.string() + ": no topic " + topic);
+  }
+  CameraSetup setup;
+  bool have_info = false, have_tf = false;
+  reader.SetTopicFilter({topics.camera_info, topics.tf_static});
+  MessageStream stream(reader);
+  while (!have_info || !have_tf) {
+    const auto message = stream.Next();
+    if (!message) break;
+    if (const auto* info = std::get_if<msg::CameraInfo>(&message->message); info && !have_info) {
+      setup.info = *info;
+      have_info = true;
+    }
+    if (const auto* tf = std::get_if<msg::TFMessage>(&message->message)) {
+      for (const auto& transform : tf->transforms) {
+        if (transform.child_frame_id != topics.camera_frame) continue;
+        setup.T_base_camera = ToIsometry(transform.transform);
+        have_tf = true;
+      }
+    }
+  }
+  if (!have_info) throw BadInputError(bag.string() + ": no message on " + topics.camera_info);
+  if (!have_tf) {
+    throw BadInputError(bag.string() + ": no " + frames::kBase + " -> " + topics.camera_frame +
+                        " transform on " + topics.tf_static);
+  }
+  return setup;
+}
+
+}  // namespace littermap

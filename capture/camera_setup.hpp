@@ -1,0 +1,29 @@
+#pragma once
+// The RGB-D camera of a run bag: its CameraInfo (the first on the topic) and the base_link ->
+// optical frame extrinsic from /tf_static.
+
+#include <filesystem>
+#include <string>
+
+#include <Eigen/Geometry>
+
+#include "capture/ros_messages.hpp"
+#include "capture/topics.hpp"
+
+namespace littermap {
+
+struct CameraSetupTopics {
+  std::string camera_info = topics::kCameraInfo;
+  std::string tf_static = topics::kTfStatic;
+  std::string camera_frame = frames::kCamera;
+};
+
+struct CameraSetup {
+  msg::CameraInfo info;
+  Eigen::Isometry3d T_base_camera = Eigen::Isometry3d::Identity();
+};
+
+// Throws BadInputError naming the bag and topic when either is missing.
+CameraSetup ReadCameraSetup(const std::filesystem::path& bag, const CameraSetupTopics& topics);
+
+}  // namespace littermap
