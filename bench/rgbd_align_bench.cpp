@@ -78,7 +78,8 @@ const std::vector<KnownPair>& SimulatorPairs() {
       const sim::RgbdRender a = camera.Render(T_world_kf, ++seed);
       const sim::RgbdRender b = camera.Render(T_world_f, ++seed);
       const RgbdImage kf{a.colour_bgr, a.depth_mm, 0.001}, f{b.colour_bgr, b.depth_mm, 0.001};
-      out.push_back({matcher.Match(kf, f, model), T_world_kf.inverse() * T_world_f});
+      out.push_back({matcher.Match(matcher.Extract(kf, model), matcher.Extract(f, model)),
+                     T_world_kf.inverse() * T_world_f});
     }
     return out;
   }();

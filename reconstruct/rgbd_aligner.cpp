@@ -78,11 +78,10 @@ double DepthAt(const RgbdImage& image, const cv::Point2f& pixel,
   return z >= options.min_depth_m && z <= options.max_depth_m ? z : 0;
 }
 
-void CheckImage(const RgbdImage& image, const char* which) {
+void CheckImage(const RgbdImage& image) {
   if (image.colour_bgr.type() != CV_8UC3 || image.depth.type() != CV_16UC1 ||
       image.colour_bgr.size() != image.depth.size()) {
-    throw UsageError(std::string("RGB-D alignment: the ") + which +
-                     " needs 8-bit BGR colour and 16-bit depth of the same size");
+    throw UsageError("RGB-D alignment needs 8-bit BGR colour and 16-bit depth of the same size");
   }
   if (!(image.depth_unit_m > 0)) throw UsageError("RGB-D alignment: depth unit must be positive");
 }
@@ -209,58 +208,57 @@ RgbdAlignment RgbdAligner::AlignPairs(const Points& p, const Points& q) const {
 
 RgbdAlignment RgbdAligner::Align(const RgbdImage& keyframe, const RgbdImage& frame,
                                  const RgbdCameraModel& camera) const {
-  const RgbdPairs pairs = Match(keyframe, frame, camera);
+  return Align(Extract(keyframe, camera), Extract(frame, camera));
+}
+
+RgbdAlignment RgbdAligner::Align(const RgbdKeyPoints& keyframe, const RgbdKeyPoints& frame) const {
+  const RgbdPairs pairs = Match(keyframe, frame);
   RgbdAlignment result = AlignPairs(pairs.p, pairs.q);
   result.matches = pairs.matches;
   return result;
 }
 
-RgbdPairs RgbdAligner::Match(const RgbdImage& keyframe, const RgbdImage& frame,
-                             const RgbdCameraModel& camera) const {
-  CheckImage(keyframe, "key frame");
-  CheckImage(frame, "frame");
+RgbdKeyPoints RgbdAligner::Extract(const RgbdImage& image, const RgbdCameraModel& camera) const {
+  CheckImage(image);
   const cv::Ptr<cv::Feature2D> detector = MakeDetector(options_);
-  std::vector<cv::KeyPoint> keys_kf, keys_f;
-  cv::Mat descriptors_kf, descriptors_f, grey;
-  cv::cvtColor(keyframe.colour_bgr, grey, cv::COLOR_BGR2GRAY);
-  detector->detectAndCompute(grey, cv::noArray(), keys_kf, descriptors_kf);
-  cv::cvtColor(frame.colour_bgr, grey, cv::COLOR_BGR2GRAY);
-  detector->detectAndCompute(grey, cv::noArray(), keys_f, descriptors_f);
-  RgbdPairs pairs;
-  if (descriptors_kf.empty() || descriptors_f.empty()) return pairs;
+  std::vector<cv::KeyPoint> keys;
+  RgbdKeyPoints features;
+  cv::Mat grey;
+  cv::cvtColor(image.colour_bgr, grey, cv::COLOR_BGR2GRAY);
+  detector->detectAndCompute(grey, cv::noArray(), keys, features.descriptors);
+  if (keys.empty()) return features;
+  std::vector<cv::Point2f> pixels;
+  pixels.reserve(keys.size());
+  for (const cv::KeyPoint& key : keys) pixels.push_back(key.pt);
+  const cv::Matx33d K(camera.fx, 0, camera.cx, 0, camera.fy, camera.cy, 0, 0, 1);
+  std::vector<cv::Point2f> rays;
+  cv::undistortPoints(pixels, rays, K, camera.distortion);
+  features.points.reserve(keys.size());
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    const double z = DepthAt(image, pixels[i], options_);
+    features.points.emplace_back(rays[i].x * z, rays[i].y * z, z);
+  }
+  return features;
+}
 
+RgbdPairs RgbdAligner::Match(const RgbdKeyPoints& keyframe, const RgbdKeyPoints& frame) const {
+  RgbdPairs pairs;
+  if (keyframe.descriptors.empty() || frame.descriptors.empty()) return pairs;
   const int norm = options_.features == RgbdFeatures::kSift ? cv::NORM_L2 : cv::NORM_HAMMING;
   cv::BFMatcher matcher(norm);
   std::vector<std::vector<cv::DMatch>> knn;
-  matcher.knnMatch(descriptors_f, descriptors_kf, knn, 2);
-
-  // Pixels of the matches with depth in both images, then undistorted to normalised rays.
-  std::vector<cv::Point2f> pixels_kf, pixels_f;
-  std::vector<double> z_kf, z_f;
+  matcher.knnMatch(frame.descriptors, keyframe.descriptors, knn, 2);
   for (const auto& candidates : knn) {
     if (candidates.size() < 2 ||
         candidates[0].distance >= options_.ratio_test * candidates[1].distance) {
       continue;
     }
     ++pairs.matches;
-    const cv::Point2f at_kf = keys_kf[static_cast<std::size_t>(candidates[0].trainIdx)].pt;
-    const cv::Point2f at_f = keys_f[static_cast<std::size_t>(candidates[0].queryIdx)].pt;
-    const double zk = DepthAt(keyframe, at_kf, options_), zf = DepthAt(frame, at_f, options_);
-    if (zk == 0 || zf == 0) continue;
-    pixels_kf.push_back(at_kf);
-    pixels_f.push_back(at_f);
-    z_kf.push_back(zk);
-    z_f.push_back(zf);
-  }
-  if (!pixels_kf.empty()) {
-    const cv::Matx33d K(camera.fx, 0, camera.cx, 0, camera.fy, camera.cy, 0, 0, 1);
-    std::vector<cv::Point2f> rays_kf, rays_f;
-    cv::undistortPoints(pixels_kf, rays_kf, K, camera.distortion);
-    cv::undistortPoints(pixels_f, rays_f, K, camera.distortion);
-    for (std::size_t i = 0; i < rays_kf.size(); ++i) {
-      pairs.p.emplace_back(rays_kf[i].x * z_kf[i], rays_kf[i].y * z_kf[i], z_kf[i]);
-      pairs.q.emplace_back(rays_f[i].x * z_f[i], rays_f[i].y * z_f[i], z_f[i]);
-    }
+    const Eigen::Vector3d& p = keyframe.points[static_cast<std::size_t>(candidates[0].trainIdx)];
+    const Eigen::Vector3d& q = frame.points[static_cast<std::size_t>(candidates[0].queryIdx)];
+    if (p.z() == 0 || q.z() == 0) continue;
+    pairs.p.push_back(p);
+    pairs.q.push_back(q);
   }
   return pairs;
 }

@@ -80,6 +80,12 @@ struct RgbdAlignment {
   double confidence = 0;
 };
 
+// The features of one RGB-D image, extracted once: a key frame is matched against many frames.
+struct RgbdKeyPoints {
+  cv::Mat descriptors;                  // one row per key point
+  std::vector<Eigen::Vector3d> points;  // back-projected, optical frame; z = 0: no valid depth
+};
+
 // 3D feature pairs of two RGB-D images: p[i] in the key frame matches q[i] in the frame.
 struct RgbdPairs {
   std::vector<Eigen::Vector3d> p, q;
@@ -90,13 +96,17 @@ class RgbdAligner {
  public:
   explicit RgbdAligner(const RgbdAlignerOptions& options = {});
 
-  // Match, then AlignPairs. Throws UsageError for images of the wrong type or size.
+  // Extract from both, Match, then AlignPairs. Throws UsageError for images of the wrong type
+  // or size.
   RgbdAlignment Align(const RgbdImage& keyframe, const RgbdImage& frame,
                       const RgbdCameraModel& camera) const;
+  RgbdAlignment Align(const RgbdKeyPoints& keyframe, const RgbdKeyPoints& frame) const;
 
-  // The feature steps: detection, ratio-test matching, depth lookup and back-projection.
-  RgbdPairs Match(const RgbdImage& keyframe, const RgbdImage& frame,
-                  const RgbdCameraModel& camera) const;
+  // Feature detection, depth lookup and back-projection (distortion undone). Throws UsageError
+  // for an image of the wrong type or size.
+  RgbdKeyPoints Extract(const RgbdImage& image, const RgbdCameraModel& camera) const;
+  // Ratio-test matching; pairs whose key points both have depth.
+  RgbdPairs Match(const RgbdKeyPoints& keyframe, const RgbdKeyPoints& frame) const;
 
   // The rejection and estimation steps on given 3D pairs (p in the key frame, q in the frame),
   // for tests and ablations; the alignment's feature counts are left 0.
