@@ -11,7 +11,7 @@ FUZZ_DIR ?= build-fuzz
 FUZZ_SECONDS ?= 30
 # End-to-end runs of the simulator through every stage: minutes under the sanitizers for no
 # code that the other tests leave unchecked there (the release suite runs them).
-SANITIZE_EXCLUDE ?= SurveyCli.ThreeWeeklyRunsMakeOneReportThatMatchesTheDatabase
+SANITIZE_EXCLUDE ?= SurveyCli.ThreeWeeklyRunsMakeOneReportThatMatchesTheDatabase|HybridTrackerCli
 JOBS ?= $(shell nproc)
 DEMO_OUT ?= out/demo
 CMAKE_FLAGS ?=

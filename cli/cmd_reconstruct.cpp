@@ -33,9 +33,11 @@ void RunReconstruct(const ReconstructArguments& arguments, CliContext& context) 
       reconstruct::ReadLaserExtrinsic(arguments.bag, options, &warnings, &laser_height_m);
   // The ground-hit filter needs the height of the laser above the ground: base_link is on it.
   if (options.slam.points.laser_height_m == 0) options.slam.points.laser_height_m = laser_height_m;
-  reconstruct::SlamPipeline pipeline(options.slam, T_base_laser);
-  reconstruct::ReconstructionResult result =
-      reconstruct::ReconstructBag(arguments.bag, options, &pipeline, context.Progress());
+  const std::unique_ptr<reconstruct::RgbdTracker> rgbd =
+      reconstruct::MakeRgbdTracker(arguments.bag, options, &warnings);
+  reconstruct::SlamPipeline pipeline(options.slam, T_base_laser, rgbd.get());
+  reconstruct::ReconstructionResult result = reconstruct::ReconstructBag(
+      arguments.bag, options, &pipeline, context.Progress(), rgbd.get());
   context.FinishProgress();
   result.warnings.insert(result.warnings.begin(), warnings.begin(), warnings.end());
   const auto& quality = pipeline.quality();
@@ -55,7 +57,7 @@ void RunReconstruct(const ReconstructArguments& arguments, CliContext& context) 
                               "; a constant-velocity model stood in");
   }
   for (const std::string& warning : result.warnings) context.Warn(warning);
-  reconstruct::WriteRun(arguments.run_dir, pipeline, result);
+  reconstruct::WriteRun(arguments.run_dir, pipeline, result, rgbd.get());
   std::printf(
       "wrote %s: %zu poses, %zu key frames, loops %zu accepted / %zu rejected, %.2f s "
       "(%.0f scans/s)\n",
@@ -73,7 +75,8 @@ void RegisterReconstructCommand(CLI::App& app, CliContext& context) {
   CLI::App* command = context.AddCommand(
       app, "reconstruct",
       "Reconstruct trajectory and occupancy map from a bag: RUN_DIR/trajectory.tum, "
-      "keyframes.tum, map.pgm, map.yaml, map.png, routines.csv, quality.json");
+      "keyframes.tum, map.pgm, map.yaml, map.png, routines.csv, quality.json; with a camera "
+      "also camera.tum and camera_sources.csv");
   command->add_option("BAG", arguments->bag, "Run bag directory")
       ->required()
       ->check(CLI::ExistingPath);
@@ -88,6 +91,8 @@ void RegisterReconstructCommand(CLI::App& app, CliContext& context) {
       ->check(CLI::ExistingFile);
   command->add_flag("--no-loop-closure{false}", arguments->options.slam.loop_closure,
                     "Track and map without loop closure (for comparisons)");
+  command->add_flag("--no-rgbd{false}", arguments->options.rgbd,
+                    "Track with the laser alone, without the RGB-D routine (for comparisons)");
   command->callback([arguments, &context] {
     context.run = [arguments, &context] { RunReconstruct(*arguments, context); };
   });

@@ -6,8 +6,10 @@
 #include <optional>
 
 #include "capture/bag_reader.hpp"
+#include "capture/camera_setup.hpp"
 #include "capture/message_header.hpp"
 #include "capture/message_stream.hpp"
+#include "capture/rgbd_pairing.hpp"
 #include "core/error.hpp"
 #include "core/pose3.hpp"
 
@@ -45,6 +47,7 @@ void ReconstructionOptions::Validate() const {
   if (scan_topic.empty()) throw UsageError("reconstruct: the scan topic must not be empty");
   if (!(max_odometry_age_s > 0)) throw UsageError("reconstruct: max_odometry_age_s must be > 0");
   slam.Validate();
+  rgbd_tracker.Validate();
 }
 
 PlanarPose ReadLaserExtrinsic(const std::filesystem::path& bag,
@@ -72,7 +75,7 @@ PlanarPose ReadLaserExtrinsic(const std::filesystem::path& bag,
 
 ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
                                     const ReconstructionOptions& options, SlamPipeline* pipeline,
-                                    const ProgressCallback& progress) {
+                                    const ProgressCallback& progress, RgbdTracker* rgbd) {
   options.Validate();
   const auto start = std::chrono::steady_clock::now();
   ReconstructionResult result;
@@ -82,8 +85,14 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
   for (const auto& info : reader.info().topics) {
     if (info.name == options.scan_topic) total = info.message_count;
   }
-  reader.SetTopicFilter({options.scan_topic, options.odometry_topic, options.imu_topic});
+  std::vector<std::string> wanted = {options.scan_topic, options.odometry_topic, options.imu_topic};
+  if (rgbd != nullptr) {
+    wanted.push_back(options.colour_topic);
+    wanted.push_back(options.depth_topic);
+  }
+  reader.SetTopicFilter(wanted);
   MessageStream stream(reader);
+  RgbdPairing pairing;
   std::optional<std::pair<TimestampNs, PlanarPose>> odometry;
   std::optional<std::pair<TimestampNs, Tilt>> tilt;
   std::uint64_t done = 0;
@@ -97,6 +106,20 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
     }
     if (const auto* imu = std::get_if<msg::Imu>(&message->message)) {
       tilt.emplace(StampOf(imu->header), TiltOf(imu->orientation));
+      continue;
+    }
+    if (auto* image = std::get_if<msg::CompressedImage>(&message->message)) {
+      std::optional<CompressedRgbd> frame = message->topic->name == options.colour_topic
+                                                ? pairing.AddColour(std::move(*image))
+                                                : pairing.AddDepth(std::move(*image));
+      if (frame && rgbd != nullptr) {
+        std::optional<PlanarPose> T_odom_base;
+        if (odometry &&
+            std::abs(ToSeconds(frame->stamp_ns - odometry->first)) <= options.max_odometry_age_s) {
+          T_odom_base = odometry->second;
+        }
+        rgbd->AddFrame(std::move(*frame), T_odom_base);
+      }
       continue;
     }
     const auto* laser = std::get_if<msg::LaserScan>(&message->message);
@@ -121,6 +144,31 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.scans_per_s = result.run_time_s > 0 ? static_cast<double>(done) / result.run_time_s : 0.0;
   return result;
+}
+
+std::unique_ptr<RgbdTracker> MakeRgbdTracker(const std::filesystem::path& bag,
+                                             const ReconstructionOptions& options,
+                                             std::vector<std::string>* warnings) {
+  if (!options.rgbd) return nullptr;
+  {
+    const BagReader reader(bag);
+    for (const std::string& topic :
+         {options.colour_topic, options.depth_topic, options.camera_info_topic}) {
+      bool present = false;
+      for (const auto& info : reader.info().topics) present = present || info.name == topic;
+      if (!present) {
+        warnings->push_back(bag.string() + ": no topic " + topic +
+                            "; tracking with the laser alone (no RGB-D routine)");
+        return nullptr;
+      }
+    }
+  }
+  CameraSetupTopics topics;
+  topics.camera_info = options.camera_info_topic;
+  topics.tf_static = options.tf_static_topic;
+  const CameraSetup setup = ReadCameraSetup(bag, topics);
+  return std::make_unique<RgbdTracker>(options.rgbd_tracker, CameraModelFromInfo(setup.info),
+                                       setup.T_base_camera);
 }
 
 }  // namespace littermap::reconstruct

@@ -3,11 +3,13 @@
 // extrinsic of a run bag and runs the SLAM pipeline over them.
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "capture/topics.hpp"
 #include "core/progress.hpp"
+#include "reconstruct/rgbd_tracker.hpp"
 #include "reconstruct/slam_pipeline.hpp"
 
 namespace littermap::reconstruct {
@@ -17,6 +19,12 @@ struct ReconstructionOptions {
   std::string odometry_topic = topics::kOdometry;
   std::string tf_static_topic = topics::kTfStatic;
   std::string imu_topic = topics::kImu;  // tilt for the ground-hit filter, if recorded
+  // The RGB-D camera for routine 3, used when the bag has these topics and `rgbd` is set.
+  std::string colour_topic = topics::kColor;
+  std::string depth_topic = topics::kDepth;
+  std::string camera_info_topic = topics::kCameraInfo;
+  bool rgbd = true;
+  RgbdTrackerOptions rgbd_tracker;
   // Odometry older than this at a scan's time counts as missing.
   double max_odometry_age_s = 0.2;
   SlamOptions slam;
@@ -30,10 +38,18 @@ struct ReconstructionResult {
 };
 
 // Runs over the bag; the pipeline holds trajectory, key frames, map and quality afterwards.
+// With an RGB-D tracker (the one the pipeline was made with) the camera frames are fed to it.
 // Throws BadInputError if the bag has no scan topic or a message does not decode.
 ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
                                     const ReconstructionOptions& options, SlamPipeline* pipeline,
-                                    const ProgressCallback& progress);
+                                    const ProgressCallback& progress, RgbdTracker* rgbd = nullptr);
+
+// Routine 3's tracker for the bag's camera, or null (with a warning) when options.rgbd is off
+// or the bag has no colour, depth and camera-info topics. Throws BadInputError if the camera
+// info or the camera's extrinsic is unusable.
+std::unique_ptr<RgbdTracker> MakeRgbdTracker(const std::filesystem::path& bag,
+                                             const ReconstructionOptions& options,
+                                             std::vector<std::string>* warnings);
 
 // The laser extrinsic from the bag's /tf_static (identity with a warning if absent); its
 // height above base_link into *height_m when given (0 if absent).

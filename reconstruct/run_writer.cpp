@@ -24,9 +24,40 @@ void WriteRoutines(const std::filesystem::path& path, const std::vector<ScanReco
   if (!out) throw InternalError(path.string() + ": writing failed");
 }
 
+std::string_view SourceName(CameraPoseSource source) {
+  switch (source) {
+    case CameraPoseSource::kLaser:
+      return "laser";
+    case CameraPoseSource::kRgbd:
+      return "rgbd";
+    case CameraPoseSource::kOdometry:
+      return "odometry";
+  }
+  return "odometry";
+}
+
+void WriteCameraPoses(const std::filesystem::path& run_dir, const SlamPipeline& pipeline,
+                      const RgbdTracker& rgbd) {
+  std::vector<TumPose> poses;
+  const std::filesystem::path sources_path = run_dir / "camera_sources.csv";
+  std::ofstream sources(sources_path);
+  if (!sources) throw UsageError(sources_path.string() + ": cannot create");
+  sources << "time,source\n";
+  for (const CameraPose& pose : rgbd.camera_poses()) {
+    const Eigen::Isometry3d T_world_camera =
+        LiftPose(pipeline.scans()[pose.scan_index].T_world_base, std::nullopt) * pose.T_scan_camera;
+    poses.push_back(
+        {pose.stamp_ns, T_world_camera.translation(), Eigen::Quaterniond(T_world_camera.linear())});
+    sources << FormatTumStamp(pose.stamp_ns) << ',' << SourceName(pose.source) << '\n';
+  }
+  if (!sources) throw InternalError(sources_path.string() + ": writing failed");
+  WriteTumTrajectory(run_dir / "camera.tum", poses);
+}
+
 }  // namespace
 
-std::string QualityJson(const SlamQuality& quality, const ReconstructionResult& result) {
+std::string QualityJson(const SlamQuality& quality, const ReconstructionResult& result,
+                        const RgbdTracker* rgbd) {
   nlohmann::ordered_json json;
   json["scans"] = quality.scans_in;
   json["scans_tracked"] = quality.scans_tracked;
@@ -52,6 +83,13 @@ std::string QualityJson(const SlamQuality& quality, const ReconstructionResult& 
   json["loop_closures_rejected_after_optimisation"] = quality.loops_rejected_after_optimisation;
   json["optimisations"] = quality.optimisations;
   json["final_cost"] = quality.final_cost;
+  if (rgbd != nullptr) {
+    const RgbdTrackerStats& stats = rgbd->stats();
+    json["rgbd"] = {{"frames", stats.frames},
+                    {"key_frames", stats.key_frames},
+                    {"alignments", stats.alignments},
+                    {"aligned", stats.aligned}};
+  }
   json["run_time_s"] = result.run_time_s;
   json["scans_per_s"] = result.scans_per_s;
   json["warnings"] = result.warnings;
@@ -59,7 +97,7 @@ std::string QualityJson(const SlamQuality& quality, const ReconstructionResult& 
 }
 
 void WriteRun(const std::filesystem::path& run_dir, const SlamPipeline& pipeline,
-              const ReconstructionResult& result) {
+              const ReconstructionResult& result, const RgbdTracker* rgbd) {
   std::error_code error;
   std::filesystem::create_directories(run_dir, error);
   if (error) throw UsageError(run_dir.string() + ": cannot create: " + error.message());
@@ -82,9 +120,10 @@ void WriteRun(const std::filesystem::path& run_dir, const SlamPipeline& pipeline
   pipeline.map().WritePgmYaml(run_dir / "map.pgm", run_dir / "map.yaml");
   pipeline.map().WritePng(run_dir / "map.png");
   WriteRoutines(run_dir / "routines.csv", pipeline.scans());
+  if (rgbd != nullptr) WriteCameraPoses(run_dir, pipeline, *rgbd);
   std::ofstream quality(run_dir / "quality.json");
   if (!quality) throw UsageError((run_dir / "quality.json").string() + ": cannot create");
-  quality << QualityJson(pipeline.quality(), result);
+  quality << QualityJson(pipeline.quality(), result, rgbd);
 }
 
 }  // namespace littermap::reconstruct

@@ -1,22 +1,27 @@
 #pragma once
 // The files of a reconstructed run (DESIGN.md, "The command line"): trajectory.tum (a pose for
 // every scan, optimised), keyframes.tum, map.pgm + map.yaml (ROS map_server), map.png (preview),
-// routines.csv (per scan: time, routine, matching ratio; thesis fig. 2.5.2.1) and quality.json.
+// routines.csv (per scan: time, routine, matching ratio; thesis fig. 2.5.2.1) and quality.json;
+// with the RGB-D routine also camera.tum (the camera's optical frame in 3D at every frame
+// tracked, from the optimised poses) and camera_sources.csv (laser / rgbd / odometry per frame).
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "reconstruct/reconstruction.hpp"
+#include "reconstruct/rgbd_tracker.hpp"
 #include "reconstruct/slam_pipeline.hpp"
 
 namespace littermap::reconstruct {
 
-// Creates run_dir if needed. Throws UsageError if a file cannot be created.
+// Creates run_dir if needed. Throws UsageError if a file cannot be created. rgbd: the tracker
+// the pipeline ran with, or null.
 void WriteRun(const std::filesystem::path& run_dir, const SlamPipeline& pipeline,
-              const ReconstructionResult& result);
+              const ReconstructionResult& result, const RgbdTracker* rgbd = nullptr);
 
 // quality.json's text (stable key names).
-std::string QualityJson(const SlamQuality& quality, const ReconstructionResult& result);
+std::string QualityJson(const SlamQuality& quality, const ReconstructionResult& result,
+                        const RgbdTracker* rgbd = nullptr);
 
 }  // namespace littermap::reconstruct

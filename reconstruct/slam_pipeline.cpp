@@ -64,6 +64,7 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<PlanarPose
   TrackInput input;
   input.stamp_ns = scan.stamp_ns;
   input.T_odom_base = T_odom_base;
+  input.tilt = tilt;
   if (points.valid_beams >= options_.min_scan_points) {
     input.points_base = VoxelDownsample(points.points_base, options_.scan_voxel_size_m);
   } else {

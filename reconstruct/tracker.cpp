@@ -65,8 +65,11 @@ void TrackerOptions::Validate() const {
   key_frames.Validate();
   buffer.Validate();
   if (!(min_matching_ratio > 0 && min_matching_ratio <= 1) ||
-      !(min_buffer_matching_ratio > 0 && min_buffer_matching_ratio <= 1)) {
-    throw UsageError("tracker: matching ratios must be in (0, 1]");
+      !(min_buffer_matching_ratio > 0 && min_buffer_matching_ratio <= 1) ||
+      !(rgbd_ratio_slack >= 0) || !(rgbd_sigma_m > 0) || !(rgbd_sigma_rad > 0)) {
+    throw UsageError(
+        "tracker: matching ratios must be in (0, 1], rgbd_ratio_slack >= 0 and the RGB-D "
+        "sigmas > 0");
   }
   if (!(max_odometry_speed_m_s > 0) || !(max_odometry_turn_rate_rad_s > 0) ||
       !(max_scan_gap_s > 0)) {
@@ -126,6 +129,7 @@ Eigen::Matrix3d Tracker::PredictionInformation(const PlanarPose& from, const Pla
 
 TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
   TrackStep step;
+  step.scan_index = scan_index;
   if (!started_) {
     // The first scan defines the world frame.
     started_ = true;
@@ -155,15 +159,17 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
       }
     }
     if (step.information.isZero() && rgbd_ != nullptr) {
-      if (const auto rgbd_pose = rgbd_->AlignAt(input.stamp_ns, predicted)) {
-        const IcpResult verify =
-            MatchIcp(input.points_base, map_->LocalTarget(), *rgbd_pose, options_.icp);
-        if (verify.converged &&
-            verify.inlier_ratio >= options_.min_matching_ratio - options_.rgbd_ratio_slack) {
+      if (const auto rgbd_pose = rgbd_->AlignAt(input, predicted, *map_)) {
+        // Verified by the laser where it still sees the map from the RGB-D pose, or by
+        // agreeing with the prediction where it does not (the scan pattern changed).
+        const double ratio =
+            MatchIcp(input.points_base, map_->LocalTarget(), *rgbd_pose, options_.icp).inlier_ratio;
+        if (ratio >= options_.min_matching_ratio - options_.rgbd_ratio_slack ||
+            Plausible(options_, pose_, predicted, *rgbd_pose)) {
           step.routine = Routine::kRgbd;
-          step.T_world_base = verify.T_target_source;
-          step.matching_ratio = verify.inlier_ratio;
-          step.information = verify.information;
+          step.T_world_base = *rgbd_pose;
+          step.matching_ratio = ratio;
+          step.information = DiagonalInformation(options_.rgbd_sigma_m, options_.rgbd_sigma_rad);
         }
       }
     }
@@ -198,8 +204,8 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
 
   // Routine 2 success forces a key frame: "fuse the scan so the global map learns".
   const bool force = step.routine == Routine::kBuffer;
-  // Odometry-only scans still make key frames: otherwise a long failure would leave the top map
-  // behind the robot and matching could never recover.
+  // Scans the laser did not place still make key frames: otherwise a long failure would leave the
+  // top map behind the robot and matching could never recover.
   if (force || map_->NeedsKeyFrame(pose_)) {
     KeyFrame key_frame{scan_index, input.stamp_ns, pose_, input.points_base, path_length_m_, {}};
     step.key_frame = map_->Add(std::move(key_frame));
@@ -211,9 +217,11 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
   if (!anchor_ && input.T_odom_base && Finite(*input.T_odom_base)) {
     anchor_ = Anchor{pose_, *input.T_odom_base};
   }
-  if (buffer_.NeedsFrame(pose_) && step.routine != Routine::kOdometryOnly) {
+  if (buffer_.NeedsFrame(pose_) && step.routine != Routine::kOdometryOnly &&
+      step.routine != Routine::kRgbd) {
     buffer_.Add({pose_, input.points_base});
   }
+  if (rgbd_ != nullptr) rgbd_->OnTracked(input, step, *map_);
   return step;
 }
 

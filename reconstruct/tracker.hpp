@@ -3,8 +3,9 @@
 //   1. match against the top map (GKMap, routine "global") from the predicted pose;
 //   2. if the matching ratio is too low, match against the nearest buffered key frame
 //      (routine "buffer") and force a key frame so the top map learns the new pattern;
-//   3. if that fails too, ask the RGB-D aligner (routine "rgbd", a seam: RgbdFallback) for a
-//      pose and verify it with the 2D matcher;
+//   3. if that fails too, ask the RGB-D aligner (routine "rgbd", RgbdFallback) for a pose and
+//      accept it if a 2D match from it reaches the matching ratio less alpha, or if it agrees
+//      with the prediction;
 //   otherwise keep the predicted pose (routine "odometry-only").
 // The prediction is the odometry increment since the last scan, or a constant-velocity model
 // when odometry is missing or implausible.
@@ -24,15 +25,6 @@ namespace littermap::reconstruct {
 enum class Routine { kGlobal, kBuffer, kRgbd, kOdometryOnly };
 std::string_view RoutineName(Routine routine);
 
-// Routine 3's seam: the RGB-D aligner (thesis 2.4) gives a pose for a scan's time from the
-// nearest RGB-D key frame, or nothing. Implemented in its own issue.
-class RgbdFallback {
- public:
-  virtual ~RgbdFallback() = default;
-  virtual std::optional<PlanarPose> AlignAt(TimestampNs stamp_ns,
-                                            const PlanarPose& T_world_base_predicted) = 0;
-};
-
 struct TrackerOptions {
   IcpOptions icp;
   KeyFrameMapOptions key_frames;
@@ -40,6 +32,8 @@ struct TrackerOptions {
   double min_matching_ratio = 0.35;        // routine 1 accepted at or above
   double min_buffer_matching_ratio = 0.4;  // routine 2 accepted at or above
   double rgbd_ratio_slack = 0.1;           // routine 3: the thesis's alpha
+  double rgbd_sigma_m = 0.03;              // routine 3's pose, standard deviations
+  double rgbd_sigma_rad = 0.02;
   // Odometry moving faster than this between two scans is treated as broken. Steps up to
   // the per-step limits always pass: stamps may be synthesised (dt near 0) or sparse.
   double max_odometry_speed_m_s = 5.0;
@@ -69,9 +63,11 @@ struct TrackInput {
   TimestampNs stamp_ns = 0;
   Points2 points_base;                    // downsampled scan points, at least a few
   std::optional<PlanarPose> T_odom_base;  // odometry at the scan's time, if any
+  std::optional<Tilt> tilt;               // roll and pitch of the base (IMU), if known
 };
 
 struct TrackStep {
+  std::size_t scan_index = 0;
   Routine routine = Routine::kOdometryOnly;
   PlanarPose T_world_base;
   double matching_ratio = 0;
@@ -79,6 +75,18 @@ struct TrackStep {
   bool new_key_frame = false;
   std::size_t key_frame = 0;  // the key frame this scan's pose is anchored to
   Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
+};
+
+// Routine 3: a pose for a scan the laser could not place, from the RGB-D aligner (thesis 2.4,
+// reconstruct/rgbd_tracker.hpp), and the outcome of every scan (to take RGB-D key frames).
+class RgbdFallback {
+ public:
+  virtual ~RgbdFallback() = default;
+  virtual std::optional<PlanarPose> AlignAt(const TrackInput& input,
+                                            const PlanarPose& T_world_base_predicted,
+                                            const KeyFrameMap& map) = 0;
+  virtual void OnTracked(const TrackInput& input, const TrackStep& step,
+                         const KeyFrameMap& map) = 0;
 };
 
 class Tracker {

@@ -86,5 +86,36 @@ TEST(ReconstructCli, BadInputExitCodes) {
   EXPECT_EQ(RunLittermap("eval trajectory " + Quote(dir / "a.tum")).exit_code, 1);
 }
 
+// A simulated run with a camera: the RGB-D routine's files, one camera pose per frame tracked,
+// and the same run without it (--no-rgbd) writes none of them.
+TEST(ReconstructCli, SimulatedRunWithACameraWritesTheCameraTrack) {
+  testing::TempDir dir;
+  const auto world =
+      std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "worlds" / "park_small.yaml";
+  ASSERT_EQ(RunLittermap("-q simulate " + Quote(world) + " -o " + Quote(dir / "bag") + " --truth " +
+                         Quote(dir / "truth") + " --duration 8")
+                .exit_code,
+            0);
+  const auto run =
+      RunLittermap("-q reconstruct " + Quote(dir / "bag") + " -o " + Quote(dir / "run"));
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto quality = nlohmann::json::parse(Slurp(dir / "run" / "quality.json"));
+  EXPECT_EQ(quality["rgbd"]["frames"], 80);  // 8 s at 10 Hz
+  // The robot drives 0.6 m/s on flat ground: an RGB-D key frame every 15 cm or so.
+  EXPECT_GE(quality["rgbd"]["key_frames"].get<int>(), 20);
+  const std::string track = Slurp(dir / "run" / "camera.tum");
+  EXPECT_EQ(std::count(track.begin(), track.end(), '\n'), 1 + 80)
+      << track.substr(0, 200);  // header
+  const std::string sources = Slurp(dir / "run" / "camera_sources.csv");
+  EXPECT_EQ(sources.substr(0, sources.find('\n')), "time,source");
+  EXPECT_NE(sources.find(",laser\n"), std::string::npos);
+
+  const auto laser = RunLittermap("-q reconstruct " + Quote(dir / "bag") + " -o " +
+                                  Quote(dir / "laser") + " --no-rgbd");
+  ASSERT_EQ(laser.exit_code, 0) << laser.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "laser" / "camera.tum"));
+  EXPECT_FALSE(nlohmann::json::parse(Slurp(dir / "laser" / "quality.json")).contains("rgbd"));
+}
+
 }  // namespace
 }  // namespace littermap

@@ -15,6 +15,7 @@
 #include <opencv2/rgbd.hpp>
 
 #include "core/error.hpp"
+#include "tum_pair.hpp"
 
 namespace littermap::reconstruct {
 namespace {
@@ -95,24 +96,6 @@ TEST(RgbdAligner, RefusesWhenTooFewPairsAgree) {
   const RgbdAlignment result = RgbdAligner().AlignPairs(pairs.p, pairs.q);
   EXPECT_FALSE(result.ok);
   EXPECT_EQ(result.confidence, 0);
-}
-
-// The TUM freiburg2 desk pair (depth 5000 units per metre, registered to colour).
-struct TumPair {
-  RgbdImage first, second;
-  RgbdCameraModel camera{520.909, 521.007, 325.141, 249.702, {}};
-};
-
-TumPair LoadTumPair() {
-  const std::filesystem::path dir = std::filesystem::path(LITTERMAP_DATASETS_DIR) / "tum_pair";
-  TumPair pair;
-  for (auto [image, name] : {std::pair{&pair.first, "1"}, std::pair{&pair.second, "2"}}) {
-    image->colour_bgr = cv::imread((dir / (std::string(name) + ".png")).string(), cv::IMREAD_COLOR);
-    image->depth =
-        cv::imread((dir / (std::string(name) + "_depth.png")).string(), cv::IMREAD_UNCHANGED);
-    image->depth_unit_m = 1.0 / 5000;
-  }
-  return pair;
 }
 
 // OpenCV's photometric+geometric RGB-D odometry (Steinbruecker/Audras) from frame to key frame.

@@ -1,0 +1,137 @@
+// Routine 3's RGB-D tracker on the real TUM desk pair: key frames taken while the laser tracks,
+// anchored to the 2D key frames (they follow the pose graph), and the base pose of a later frame
+// from aligning it to them.
+
+#include "reconstruct/rgbd_tracker.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "capture/image_codec.hpp"
+#include "capture/message_header.hpp"
+#include "core/pose3.hpp"
+#include "tum_pair.hpp"
+
+namespace littermap::reconstruct {
+namespace {
+
+constexpr TimestampNs kStamp1 = 1'000'000'000, kStamp2 = 1'100'000'000;
+
+// The camera 0.2 m ahead of base_link and 0.5 m up, looking forward (optical z = base x).
+Eigen::Isometry3d BaseCamera() {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() << 0, 0, 1, -1, 0, 0, 0, -1, 0;
+  T.translation() = Eigen::Vector3d(0.2, 0, 0.5);
+  return T;
+}
+
+CompressedRgbd Compress(const RgbdImage& image, TimestampNs stamp_ns) {
+  cv::Mat depth_mm;  // TUM depth is in 1/5000 m
+  image.depth.convertTo(depth_mm, CV_16U, image.depth_unit_m * 1000);
+  const msg::Header header = MakeHeader(stamp_ns, "camera");
+  return {stamp_ns, EncodeColorJpeg(image.colour_bgr, header), EncodeDepthPng(depth_mm, header)};
+}
+
+RgbdImage Decode(const CompressedRgbd& frame) {
+  return {DecodeColor(frame.colour), DecodeDepthMm(frame.depth), 0.001};
+}
+
+class RgbdTrackerTest : public testing::Test {
+ protected:
+  void SetUp() override {
+    const TumPair pair = LoadTumPair();
+    ASSERT_FALSE(pair.first.colour_bgr.empty()) << "tum_pair data set missing";
+    camera_ = pair.camera;
+    frame1_ = Compress(pair.first, kStamp1);
+    frame2_ = Compress(pair.second, kStamp2);
+    map_.Add({0, kStamp1, kKeyFramePose, {{1, 0}, {1, 1}, {1, -1}, {2, 0}}, 0, {}});
+  }
+
+  // Frame 1 tracked by the laser at the key frame's pose.
+  void TrackFirstByLaser(RgbdTracker* tracker) {
+    tracker->AddFrame(frame1_, std::nullopt);
+    TrackStep step;
+    step.routine = Routine::kGlobal;
+    step.T_world_base = kKeyFramePose;
+    tracker->OnTracked({kStamp1, {}, std::nullopt, std::nullopt}, step, map_);
+  }
+
+  // The base pose of frame 2 that the alignment of the two images implies.
+  PlanarPose Expected(const PlanarPose& T_world_keyframe) const {
+    const RgbdAlignment alignment = RgbdAligner().Align(Decode(frame1_), Decode(frame2_), camera_);
+    EXPECT_TRUE(alignment.ok);
+    return ToPlanar(LiftPose(T_world_keyframe, std::nullopt) * BaseCamera() *
+                    alignment.T_keyframe_frame * BaseCamera().inverse());
+  }
+
+  const PlanarPose kKeyFramePose{3, -2, 0.4};
+  RgbdCameraModel camera_;
+  CompressedRgbd frame1_, frame2_;
+  KeyFrameMap map_{KeyFrameMapOptions{}, IcpOptions{}};
+};
+
+void ExpectNear(const PlanarPose& actual, const PlanarPose& expected) {
+  EXPECT_NEAR(actual.x_m, expected.x_m, 1e-3);
+  EXPECT_NEAR(actual.y_m, expected.y_m, 1e-3);
+  EXPECT_NEAR(WrapAngle(actual.theta_rad - expected.theta_rad), 0, 1e-3);
+}
+
+TEST_F(RgbdTrackerTest, PlacesAFrameByAligningItToTheKeyFrameTheLaserTracked) {
+  RgbdTracker tracker({}, camera_, BaseCamera());
+  TrackFirstByLaser(&tracker);
+  EXPECT_EQ(tracker.stats().key_frames, 1u);
+  tracker.AddFrame(frame2_, std::nullopt);
+  const auto pose = tracker.AlignAt({kStamp2, {}, std::nullopt, std::nullopt}, kKeyFramePose, map_);
+  ASSERT_TRUE(pose);
+  const PlanarPose expected = Expected(kKeyFramePose);
+  ExpectNear(*pose, expected);
+  // The desk pair moved 14 cm: the pose is neither the key frame's nor far from it.
+  const double moved_m = std::hypot(pose->x_m - kKeyFramePose.x_m, pose->y_m - kKeyFramePose.y_m);
+  EXPECT_GT(moved_m, 0.03);
+  EXPECT_LT(moved_m, 0.3);
+  EXPECT_EQ(tracker.stats().aligned, 1u);
+}
+
+TEST_F(RgbdTrackerTest, KeyFramesFollowTheirLaserKeyFrameWhenThePoseGraphMovesIt) {
+  RgbdTracker tracker({}, camera_, BaseCamera());
+  TrackFirstByLaser(&tracker);
+  const PlanarPose moved{5, 1, -1.0};
+  map_.SetPoses({moved});
+  tracker.AddFrame(frame2_, std::nullopt);
+  const auto pose = tracker.AlignAt({kStamp2, {}, std::nullopt, std::nullopt}, moved, map_);
+  ASSERT_TRUE(pose);
+  ExpectNear(*pose, Expected(moved));
+}
+
+TEST_F(RgbdTrackerTest, NoPoseWithoutAKeyFrameOrACurrentFrame) {
+  RgbdTracker tracker({}, camera_, BaseCamera());
+  tracker.AddFrame(frame2_, std::nullopt);
+  EXPECT_FALSE(tracker.AlignAt({kStamp2, {}, std::nullopt, std::nullopt}, kKeyFramePose, map_));
+  RgbdTracker other({}, camera_, BaseCamera());
+  TrackFirstByLaser(&other);
+  other.AddFrame(frame2_, std::nullopt);
+  // A scan 1 s after the latest frame: the frame does not show the scan's pose.
+  EXPECT_FALSE(other.AlignAt({kStamp2 + 1'000'000'000, {}, std::nullopt, std::nullopt},
+                             kKeyFramePose, map_));
+}
+
+TEST_F(RgbdTrackerTest, FramesThePoseOfWhichNothingMeasuredMakeNoKeyFrames) {
+  RgbdTracker tracker({}, camera_, BaseCamera());
+  tracker.AddFrame(frame1_, std::nullopt);
+  TrackStep step;
+  step.routine = Routine::kOdometryOnly;
+  step.T_world_base = kKeyFramePose;
+  const Tilt tilt{0.1, -0.05};
+  tracker.OnTracked({kStamp1, {}, std::nullopt, tilt}, step, map_);
+  EXPECT_EQ(tracker.stats().key_frames, 0u);
+  ASSERT_EQ(tracker.camera_poses().size(), 1u);
+  const CameraPose& pose = tracker.camera_poses()[0];
+  EXPECT_EQ(pose.source, CameraPoseSource::kOdometry);
+  // Its 3D pose carries the tilt: the base's roll and pitch, the camera's mount.
+  const Eigen::Isometry3d expected = LiftPose({0, 0, 0}, tilt) * BaseCamera();
+  EXPECT_TRUE(pose.T_scan_camera.isApprox(expected, 1e-9));
+}
+
+}  // namespace
+}  // namespace littermap::reconstruct
