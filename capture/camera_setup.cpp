@@ -7,18 +7,26 @@
 
 namespace littermap {
 
-CameraSetup ReadCameraSetup(const std::filesystem::path& bag, const CameraSetupTopics& topics) {
+CameraSetup ReadCameraSetup(const std::filesystem::path& bag, const CameraSetupTopics& topics,
+                            Extrinsic extrinsic) {
   BagReader reader(bag);
-  for (const std::string& topic : {topics.camera_info, topics.tf_static}) {
-    bool present = false;
-    for (const auto& info : reader.info().topics) present = present || info.name == topic;
-    if (!present) throw BadInputError(bag.string() + ": no topic " + topic);
+  const auto has = [&reader](const std::string& topic) {
+    for (const auto& info : reader.info().topics) {
+      if (info.name == topic) return true;
+    }
+    return false;
+  };
+  if (!has(topics.camera_info))
+    throw BadInputError(bag.string() + ": no topic " + topics.camera_info);
+  const bool need_tf = extrinsic == Extrinsic::kRequired;
+  if (need_tf && !has(topics.tf_static)) {
+    throw BadInputError(bag.string() + ": no topic " + topics.tf_static);
   }
   CameraSetup setup;
   bool have_info = false, have_tf = false;
   reader.SetTopicFilter({topics.camera_info, topics.tf_static});
   MessageStream stream(reader);
-  while (!have_info || !have_tf) {
+  while (!have_info || (!have_tf && has(topics.tf_static))) {
     const auto message = stream.Next();
     if (!message) break;
     if (const auto* info = std::get_if<msg::CameraInfo>(&message->message); info && !have_info) {
@@ -34,7 +42,7 @@ CameraSetup ReadCameraSetup(const std::filesystem::path& bag, const CameraSetupT
     }
   }
   if (!have_info) throw BadInputError(bag.string() + ": no message on " + topics.camera_info);
-  if (!have_tf) {
+  if (!have_tf && need_tf) {
     throw BadInputError(bag.string() + ": no " + frames::kBase + " -> " + topics.camera_frame +
                         " transform on " + topics.tf_static);
   }

@@ -21,12 +21,40 @@ struct ReconstructArguments {
   reconstruct::ReconstructionOptions options;
 };
 
+// A bag without laser scans (an imported TUM RGB-D sequence): visual odometry alone.
+void RunVisualOdometry(const ReconstructArguments& arguments,
+                       const reconstruct::ReconstructionOptions& options, CliContext& context) {
+  std::vector<reconstruct::VisualFrame> frames;
+  reconstruct::VisualOdometryStats stats;
+  reconstruct::ReconstructionResult result = reconstruct::ReconstructBagVisually(
+      arguments.bag, options, &frames, &stats, context.Progress());
+  context.FinishProgress();
+  result.warnings.insert(result.warnings.begin(),
+                         "no laser scans on " + options.scan_topic +
+                             ": visual odometry from the camera alone (no occupancy map)");
+  if (stats.segments > 1) {
+    result.warnings.push_back("tracking was lost " + std::to_string(stats.segments - 1) +
+                              " times; each new segment starts at the last pose known");
+  }
+  for (const std::string& warning : result.warnings) context.Warn(warning);
+  reconstruct::WriteVisualRun(arguments.run_dir, frames, stats, result);
+  std::printf(
+      "wrote %s: %zu of %zu frames tracked, %zu key frames, %zu segments, %.2f s "
+      "(%.0f frames/s)\n",
+      arguments.run_dir.c_str(), stats.tracked, stats.frames, stats.key_frames, stats.segments,
+      result.run_time_s, result.scans_per_s);
+}
+
 void RunReconstruct(const ReconstructArguments& arguments, CliContext& context) {
   reconstruct::ReconstructionOptions options = arguments.options;
   if (!arguments.options_file.empty()) {
     reconstruct::ApplyOptionsFile(arguments.options_file, &options);
   }
   options.Validate();
+  if (!reconstruct::HasLaser(arguments.bag, options)) {
+    RunVisualOdometry(arguments, options, context);
+    return;
+  }
   std::vector<std::string> warnings;
   double laser_height_m = 0;
   const PlanarPose T_base_laser =
@@ -76,7 +104,9 @@ void RegisterReconstructCommand(CLI::App& app, CliContext& context) {
       app, "reconstruct",
       "Reconstruct trajectory and occupancy map from a bag: RUN_DIR/trajectory.tum, "
       "keyframes.tum, map.pgm, map.yaml, map.png, routines.csv, quality.json; with a camera "
-      "also camera.tum and camera_sources.csv");
+      "also camera.tum and camera_sources.csv. A bag without laser scans (an imported TUM "
+      "RGB-D sequence) gets visual odometry: trajectory.tum of the camera, keyframes.tum, "
+      "routines.csv, quality.json");
   command->add_option("BAG", arguments->bag, "Run bag directory")
       ->required()
       ->check(CLI::ExistingPath);

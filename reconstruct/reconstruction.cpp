@@ -7,6 +7,7 @@
 
 #include "capture/bag_reader.hpp"
 #include "capture/camera_setup.hpp"
+#include "capture/image_codec.hpp"
 #include "capture/message_header.hpp"
 #include "capture/message_stream.hpp"
 #include "capture/rgbd_pairing.hpp"
@@ -34,11 +35,11 @@ LaserScan ToScan(const msg::LaserScan& message) {
 }
 
 void RequireTopic(const BagReader& reader, const std::string& topic,
-                  const std::filesystem::path& bag) {
+                  const std::filesystem::path& bag, const char* what) {
   for (const auto& info : reader.info().topics) {
     if (info.name == topic) return;
   }
-  throw BadInputError(bag.string() + ": no topic " + topic + " (choose one with --scan-topic)");
+  throw BadInputError(bag.string() + ": no " + what + " topic " + topic);
 }
 
 }  // namespace
@@ -48,6 +49,7 @@ void ReconstructionOptions::Validate() const {
   if (!(max_odometry_age_s > 0)) throw UsageError("reconstruct: max_odometry_age_s must be > 0");
   slam.Validate();
   rgbd_tracker.Validate();
+  visual_odometry.Validate();
 }
 
 PlanarPose ReadLaserExtrinsic(const std::filesystem::path& bag,
@@ -80,7 +82,7 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
   const auto start = std::chrono::steady_clock::now();
   ReconstructionResult result;
   BagReader reader(bag);
-  RequireTopic(reader, options.scan_topic, bag);
+  RequireTopic(reader, options.scan_topic, bag, "laser scan");
   std::uint64_t total = 0;
   for (const auto& info : reader.info().topics) {
     if (info.name == options.scan_topic) total = info.message_count;
@@ -139,6 +141,69 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
   }
   ReportProgress(progress, {task, done, total});
   pipeline->Finish();
+  for (const std::string& warning : stream.warnings()) result.warnings.push_back(warning);
+  result.run_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.scans_per_s = result.run_time_s > 0 ? static_cast<double>(done) / result.run_time_s : 0.0;
+  return result;
+}
+
+bool HasLaser(const std::filesystem::path& bag, const ReconstructionOptions& options) {
+  const BagReader reader(bag);
+  for (const auto& info : reader.info().topics) {
+    if (info.name == options.scan_topic) return true;
+  }
+  return false;
+}
+
+ReconstructionResult ReconstructBagVisually(const std::filesystem::path& bag,
+                                            const ReconstructionOptions& options,
+                                            std::vector<VisualFrame>* frames,
+                                            VisualOdometryStats* stats,
+                                            const ProgressCallback& progress) {
+  options.Validate();
+  const auto start = std::chrono::steady_clock::now();
+  {
+    const BagReader reader(bag);
+    bool colour = false;
+    for (const auto& info : reader.info().topics)
+      colour = colour || info.name == options.colour_topic;
+    if (!colour) {
+      throw BadInputError(bag.string() + ": no laser scan topic " + options.scan_topic +
+                          " (choose one with --scan-topic) and no colour image topic " +
+                          options.colour_topic + " for visual odometry");
+    }
+  }
+  CameraSetupTopics topics;
+  topics.camera_info = options.camera_info_topic;
+  topics.tf_static = options.tf_static_topic;
+  const CameraSetup setup = ReadCameraSetup(bag, topics, Extrinsic::kOptional);
+  VisualOdometry odometry(options.visual_odometry, CameraModelFromInfo(setup.info));
+  BagReader reader(bag);
+  std::uint64_t total = 0;
+  RequireTopic(reader, options.depth_topic, bag, "depth image");
+  for (const auto& info : reader.info().topics) {
+    if (info.name == options.colour_topic) total = info.message_count;
+  }
+  reader.SetTopicFilter({options.colour_topic, options.depth_topic});
+  MessageStream stream(reader);
+  RgbdPairing pairing;
+  std::uint64_t done = 0;
+  const std::string task = "visual odometry on " + bag.filename().string();
+  while (auto message = stream.Next()) {
+    auto* image = std::get_if<msg::CompressedImage>(&message->message);
+    if (image == nullptr) continue;
+    const bool colour = message->topic->name == options.colour_topic;
+    if (colour && ++done % 20 == 0) ReportProgress(progress, {task, done, total});
+    std::optional<CompressedRgbd> frame =
+        colour ? pairing.AddColour(std::move(*image)) : pairing.AddDepth(std::move(*image));
+    if (!frame) continue;
+    const RgbdImage decoded{DecodeColor(frame->colour), DecodeDepthMm(frame->depth), 0.001};
+    frames->push_back({frame->stamp_ns, odometry.Track(decoded)});
+  }
+  ReportProgress(progress, {task, done, total});
+  *stats = odometry.stats();
+  ReconstructionResult result;
   for (const std::string& warning : stream.warnings()) result.warnings.push_back(warning);
   result.run_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

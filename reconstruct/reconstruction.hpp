@@ -11,6 +11,7 @@
 #include "core/progress.hpp"
 #include "reconstruct/rgbd_tracker.hpp"
 #include "reconstruct/slam_pipeline.hpp"
+#include "reconstruct/visual_odometry.hpp"
 
 namespace littermap::reconstruct {
 
@@ -25,6 +26,7 @@ struct ReconstructionOptions {
   std::string camera_info_topic = topics::kCameraInfo;
   bool rgbd = true;
   RgbdTrackerOptions rgbd_tracker;
+  VisualOdometryOptions visual_odometry;  // for a bag with a camera and no laser
   // Odometry older than this at a scan's time counts as missing.
   double max_odometry_age_s = 0.2;
   SlamOptions slam;
@@ -43,6 +45,25 @@ struct ReconstructionResult {
 ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
                                     const ReconstructionOptions& options, SlamPipeline* pipeline,
                                     const ProgressCallback& progress, RgbdTracker* rgbd = nullptr);
+
+// True if the bag has the scan topic; else only visual odometry can run on it.
+bool HasLaser(const std::filesystem::path& bag, const ReconstructionOptions& options);
+
+// One camera frame of a visual-odometry run.
+struct VisualFrame {
+  TimestampNs stamp_ns = 0;
+  VisualOdometryStep step;
+};
+
+// Visual odometry over the camera frames of a bag without laser scans (thesis 2.4 alone). The
+// bag needs the colour, depth and camera-info topics; a base -> camera extrinsic is not needed
+// (poses are of the camera). Throws BadInputError naming the bag and topic when one is missing or
+// a message does not decode.
+ReconstructionResult ReconstructBagVisually(const std::filesystem::path& bag,
+                                            const ReconstructionOptions& options,
+                                            std::vector<VisualFrame>* frames,
+                                            VisualOdometryStats* stats,
+                                            const ProgressCallback& progress);
 
 // Routine 3's tracker for the bag's camera, or null (with a warning) when options.rgbd is off
 // or the bag has no colour, depth and camera-info topics. Throws BadInputError if the camera

@@ -11,6 +11,23 @@
 namespace littermap::reconstruct {
 namespace {
 
+void CreateRunDirectory(const std::filesystem::path& run_dir) {
+  std::error_code error;
+  std::filesystem::create_directories(run_dir, error);
+  if (error) throw UsageError(run_dir.string() + ": cannot create: " + error.message());
+}
+
+TumPose ToTum(TimestampNs stamp_ns, const Eigen::Isometry3d& T) {
+  return {stamp_ns, T.translation(), Eigen::Quaterniond(T.linear())};
+}
+
+void WriteText(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path);
+  if (!out) throw UsageError(path.string() + ": cannot create");
+  out << text;
+  if (!out) throw InternalError(path.string() + ": writing failed");
+}
+
 void WriteRoutines(const std::filesystem::path& path, const std::vector<ScanRecord>& scans) {
   std::ofstream out(path);
   if (!out) throw UsageError(path.string() + ": cannot create");
@@ -46,8 +63,7 @@ void WriteCameraPoses(const std::filesystem::path& run_dir, const SlamPipeline& 
   for (const CameraPose& pose : rgbd.camera_poses()) {
     const Eigen::Isometry3d T_world_camera =
         LiftPose(pipeline.scans()[pose.scan_index].T_world_base, std::nullopt) * pose.T_scan_camera;
-    poses.push_back(
-        {pose.stamp_ns, T_world_camera.translation(), Eigen::Quaterniond(T_world_camera.linear())});
+    poses.push_back(ToTum(pose.stamp_ns, T_world_camera));
     sources << FormatTumStamp(pose.stamp_ns) << ',' << SourceName(pose.source) << '\n';
   }
   if (!sources) throw InternalError(sources_path.string() + ": writing failed");
@@ -98,9 +114,7 @@ std::string QualityJson(const SlamQuality& quality, const ReconstructionResult& 
 
 void WriteRun(const std::filesystem::path& run_dir, const SlamPipeline& pipeline,
               const ReconstructionResult& result, const RgbdTracker* rgbd) {
-  std::error_code error;
-  std::filesystem::create_directories(run_dir, error);
-  if (error) throw UsageError(run_dir.string() + ": cannot create: " + error.message());
+  CreateRunDirectory(run_dir);
   std::vector<TumPose> trajectory;
   for (const ScanRecord& scan : pipeline.scans()) {
     trajectory.push_back(TumPoseFromPlanar(scan.stamp_ns, scan.T_world_base));
@@ -121,9 +135,37 @@ void WriteRun(const std::filesystem::path& run_dir, const SlamPipeline& pipeline
   pipeline.map().WritePng(run_dir / "map.png");
   WriteRoutines(run_dir / "routines.csv", pipeline.scans());
   if (rgbd != nullptr) WriteCameraPoses(run_dir, pipeline, *rgbd);
-  std::ofstream quality(run_dir / "quality.json");
-  if (!quality) throw UsageError((run_dir / "quality.json").string() + ": cannot create");
-  quality << QualityJson(pipeline.quality(), result, rgbd);
+  WriteText(run_dir / "quality.json", QualityJson(pipeline.quality(), result, rgbd));
+}
+
+void WriteVisualRun(const std::filesystem::path& run_dir, const std::vector<VisualFrame>& frames,
+                    const VisualOdometryStats& stats, const ReconstructionResult& result) {
+  CreateRunDirectory(run_dir);
+  std::vector<TumPose> trajectory, key_frames;
+  std::string routines = "time,routine,matching_ratio\n";
+  char confidence[32];
+  for (const VisualFrame& frame : frames) {
+    std::snprintf(confidence, sizeof confidence, "%.4f", frame.step.alignment.confidence);
+    routines += FormatTumStamp(frame.stamp_ns) + (frame.step.tracked ? ",rgbd," : ",lost,") +
+                (frame.step.new_segment ? "1.0000" : confidence) + "\n";
+    if (!frame.step.tracked) continue;
+    if (frame.step.previous_became_key_frame) key_frames.push_back(trajectory.back());
+    trajectory.push_back(ToTum(frame.stamp_ns, frame.step.T_world_camera));
+    if (frame.step.new_key_frame) key_frames.push_back(trajectory.back());
+  }
+  WriteTumTrajectory(run_dir / "trajectory.tum", trajectory);
+  WriteTumTrajectory(run_dir / "keyframes.tum", key_frames);
+  WriteText(run_dir / "routines.csv", routines);
+  nlohmann::ordered_json json;
+  json["mode"] = "visual-odometry";
+  json["frames"] = stats.frames;
+  json["frames_tracked"] = stats.tracked;
+  json["key_frames"] = stats.key_frames;
+  json["segments"] = stats.segments;
+  json["run_time_s"] = result.run_time_s;
+  json["frames_per_s"] = result.scans_per_s;
+  json["warnings"] = result.warnings;
+  WriteText(run_dir / "quality.json", json.dump(2) + "\n");
 }
 
 }  // namespace littermap::reconstruct

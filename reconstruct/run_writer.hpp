@@ -20,6 +20,12 @@ namespace littermap::reconstruct {
 void WriteRun(const std::filesystem::path& run_dir, const SlamPipeline& pipeline,
               const ReconstructionResult& result, const RgbdTracker* rgbd = nullptr);
 
+// A visual-odometry run (a bag without laser): trajectory.tum (the camera's optical frame at
+// every frame tracked), keyframes.tum, routines.csv (per frame: time, "rgbd" or "lost", the
+// alignment's confidence) and quality.json (frames, tracked, key frames, segments, run time).
+void WriteVisualRun(const std::filesystem::path& run_dir, const std::vector<VisualFrame>& frames,
+                    const VisualOdometryStats& stats, const ReconstructionResult& result);
+
 // quality.json's text (stable key names).
 std::string QualityJson(const SlamQuality& quality, const ReconstructionResult& result,
                         const RgbdTracker* rgbd = nullptr);
