@@ -19,6 +19,22 @@ Setter Set(Field field) {
   };
 }
 
+// A named choice, for the RGB-D aligners of routine 3 and of visual odometry alike.
+template <typename Enum>
+Setter SetAligners(const char* key, std::map<std::string, Enum> names,
+                   Enum RgbdAlignerOptions::*field) {
+  return [key, names, field](const YAML::Node& node, ReconstructionOptions* options) {
+    const auto found = names.find(node.as<std::string>());
+    if (found == names.end()) {
+      std::string known;
+      for (const auto& [name, value] : names) known += (known.empty() ? "" : ", ") + name;
+      throw BadInputError(std::string("option '") + key + "' must be one of " + known);
+    }
+    options->rgbd_tracker.aligner.*field = found->second;
+    options->visual_odometry.aligner.*field = found->second;
+  };
+}
+
 const std::map<std::string, Setter>& Setters() {
   using O = ReconstructionOptions;
   static const std::map<std::string, Setter> setters = {
@@ -48,6 +64,17 @@ const std::map<std::string, Setter>& Setters() {
       {"odometry_sigma_rad_per_rad",
        Set<double>([](O& o) -> double& { return o.slam.tracker.odometry_sigma_rad_per_rad; })},
       {"rgbd", Set<bool>([](O& o) -> bool& { return o.rgbd; })},
+      {"rgbd_features", SetAligners<RgbdFeatures>("rgbd_features",
+                                                  {{"orb", RgbdFeatures::kOrb},
+                                                   {"sift", RgbdFeatures::kSift},
+                                                   {"akaze", RgbdFeatures::kAkaze}},
+                                                  &RgbdAlignerOptions::features)},
+      {"rgbd_rejection",
+       SetAligners<PairRejection>("rgbd_rejection",
+                                  {{"histogram", PairRejection::kCircularHistogram},
+                                   {"ransac", PairRejection::kRansac},
+                                   {"none", PairRejection::kNone}},
+                                  &RgbdAlignerOptions::rejection)},
       {"rgbd_ratio_slack",
        Set<double>([](O& o) -> double& { return o.slam.tracker.rgbd_ratio_slack; })},
       {"rgbd_key_frame_distance_m",
@@ -125,6 +152,8 @@ void ApplyOptionsFile(const std::filesystem::path& path, ReconstructionOptions* 
       setter->second(entry.second, options);
     } catch (const YAML::Exception&) {
       throw BadInputError(path.string() + ": option '" + key + "' has a value of the wrong type");
+    } catch (const BadInputError& e) {
+      throw BadInputError(path.string() + ": " + e.what());
     }
   }
   options->Validate();

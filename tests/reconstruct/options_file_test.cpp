@@ -1,0 +1,85 @@
+// The reconstruction options file: known keys set their options (the RGB-D choices both
+// aligners), anything else fails naming the file and the key.
+
+#include "reconstruct/options_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "core/error.hpp"
+#include "support/temp_dir.hpp"
+
+namespace littermap::reconstruct {
+namespace {
+
+std::filesystem::path Write(const testing::TempDir& dir, const std::string& text) {
+  const auto path = dir / "options.yaml";
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string ErrorOf(const std::filesystem::path& path) {
+  ReconstructionOptions options;
+  try {
+    ApplyOptionsFile(path, &options);
+  } catch (const BadInputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(OptionsFile, SetsTheNamedOptions) {
+  testing::TempDir dir;
+  ReconstructionOptions options;
+  ApplyOptionsFile(Write(dir,
+                         "min_matching_ratio: 0.5\n"
+                         "rgbd: false\n"
+                         "rgbd_features: akaze\n"
+                         "rgbd_rejection: ransac\n"
+                         "rgbd_key_frame_distance_m: 0.4\n"
+                         "loop_closure: false\n"),
+                   &options);
+  EXPECT_EQ(options.slam.tracker.min_matching_ratio, 0.5);
+  EXPECT_FALSE(options.rgbd);
+  EXPECT_EQ(options.rgbd_tracker.aligner.features, RgbdFeatures::kAkaze);
+  EXPECT_EQ(options.visual_odometry.aligner.features, RgbdFeatures::kAkaze);
+  EXPECT_EQ(options.rgbd_tracker.aligner.rejection, PairRejection::kRansac);
+  EXPECT_EQ(options.visual_odometry.aligner.rejection, PairRejection::kRansac);
+  EXPECT_EQ(options.rgbd_tracker.key_frame_distance_m, 0.4);
+  EXPECT_FALSE(options.slam.loop_closure);
+}
+
+TEST(OptionsFile, AnEmptyFileKeepsTheDefaults) {
+  testing::TempDir dir;
+  ReconstructionOptions options;
+  ApplyOptionsFile(Write(dir, ""), &options);
+  EXPECT_EQ(options.slam.tracker.min_matching_ratio,
+            ReconstructionOptions{}.slam.tracker.min_matching_ratio);
+  EXPECT_TRUE(options.rgbd);
+}
+
+TEST(OptionsFile, BadKeysAndValuesNameTheFileAndKey) {
+  testing::TempDir dir;
+  const std::string unknown = ErrorOf(Write(dir, "min_matchng_ratio: 0.5\n"));
+  EXPECT_NE(unknown.find("options.yaml: unknown option 'min_matchng_ratio'"), std::string::npos)
+      << unknown;
+  const std::string type = ErrorOf(Write(dir, "min_matching_ratio: [1, 2]\n"));
+  EXPECT_NE(type.find("option 'min_matching_ratio' has a value of the wrong type"),
+            std::string::npos)
+      << type;
+  const std::string choice = ErrorOf(Write(dir, "rgbd_features: surf\n"));
+  EXPECT_NE(choice.find("options.yaml: option 'rgbd_features' must be one of akaze, orb, sift"),
+            std::string::npos)
+      << choice;
+  EXPECT_NE(ErrorOf(Write(dir, "- a list\n")).find("expected a map"), std::string::npos);
+}
+
+TEST(OptionsFile, OutOfRangeValuesFailValidation) {
+  testing::TempDir dir;
+  ReconstructionOptions options;
+  EXPECT_THROW(ApplyOptionsFile(Write(dir, "rgbd_min_confidence: 2\n"), &options), UsageError);
+}
+
+}  // namespace
+}  // namespace littermap::reconstruct
