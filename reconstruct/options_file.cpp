@@ -19,7 +19,15 @@ Setter Set(Field field) {
   };
 }
 
-// A named choice, for the RGB-D aligners of routine 3 and of visual odometry alike.
+// A value of the RGB-D aligners of routine 3 and of visual odometry alike.
+template <typename T>
+Setter SetAligners(T RgbdAlignerOptions::*field) {
+  return [field](const YAML::Node& node, ReconstructionOptions* options) {
+    options->rgbd_tracker.aligner.*field = options->visual_odometry.aligner.*field = node.as<T>();
+  };
+}
+
+// A named choice, for both RGB-D aligners.
 template <typename Enum>
 Setter SetAligners(const char* key, std::map<std::string, Enum> names,
                    Enum RgbdAlignerOptions::*field) {
@@ -89,8 +97,8 @@ const std::map<std::string, Setter>& Setters() {
        Set<double>([](O& o) -> double& { return o.rgbd_tracker.search_radius_m; })},
       {"rgbd_min_confidence",
        Set<double>([](O& o) -> double& { return o.rgbd_tracker.min_confidence; })},
-      {"rgbd_max_features",
-       Set<int>([](O& o) -> int& { return o.rgbd_tracker.aligner.max_features; })},
+      {"rgbd_max_features", SetAligners(&RgbdAlignerOptions::max_features)},
+      {"rgbd_orb_fast_threshold", SetAligners(&RgbdAlignerOptions::orb_fast_threshold)},
       {"key_frame_translation_m", Set<double>([](O& o) -> double& {
          return o.slam.tracker.key_frames.translation_threshold_m;
        })},

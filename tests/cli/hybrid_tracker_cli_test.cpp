@@ -49,22 +49,22 @@ TEST(HybridTrackerCli, CameraKeepsThePoseThroughTiltsThatLoseTheLaserOnlyTracker
   const double hybrid_ate = Ate(d / "hybrid" / "trajectory.tum", truth);
   const double laser_ate = Ate(d / "laser" / "trajectory.tum", truth);
   const double odometry_ate = Ate(d / "laser" / "odometry.tum", truth);
-  // Measured 0.26 m hybrid, 2.05 m laser only, 1.44 m odometry: the laser-only tracker is worse
-  // than odometry (it fixes each slip into its map), the hybrid one several times better.
+  // Measured 0.40 m hybrid, 2.05 m laser only, 1.44 m odometry: the laser-only tracker is worse
+  // than odometry (it fixes each slip into its map), the hybrid one five times better.
   EXPECT_GT(laser_ate, odometry_ate);
-  EXPECT_LT(hybrid_ate, 0.5);
-  EXPECT_LT(hybrid_ate, 0.3 * laser_ate);
+  EXPECT_LT(hybrid_ate, 0.6);
+  EXPECT_LT(hybrid_ate, 0.35 * laser_ate);
 
   const auto hybrid = ReadJson(d / "hybrid" / "quality.json");
   const auto laser = ReadJson(d / "laser" / "quality.json");
   EXPECT_EQ(laser["routines"]["rgbd"], 0);
   EXPECT_FALSE(laser.contains("rgbd"));
-  // Routine 3 takes over most scans the laser could not place: measured 212 scans by RGB-D and
-  // 63 by odometry alone, against 274 by odometry alone without it.
+  // Routine 3 takes over the scans the laser could not place: measured 244 scans by RGB-D and 2
+  // by odometry alone, against 274 by odometry alone without it.
   const int rgbd_scans = hybrid["routines"]["rgbd"].get<int>();
-  EXPECT_GT(rgbd_scans, 100);
+  EXPECT_GT(rgbd_scans, 150);
   EXPECT_LT(hybrid["routines"]["odometry-only"].get<int>(),
-            laser["routines"]["odometry-only"].get<int>() / 3);
+            laser["routines"]["odometry-only"].get<int>() / 10);
   EXPECT_EQ(hybrid["rgbd"]["frames"], 1775);
   // Camera and laser both run at 10 Hz: about one alignment per routine-3 scan.
   EXPECT_GE(hybrid["rgbd"]["aligned"].get<int>(), rgbd_scans / 2);

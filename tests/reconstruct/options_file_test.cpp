@@ -38,6 +38,7 @@ TEST(OptionsFile, SetsTheNamedOptions) {
                          "rgbd_features: akaze\n"
                          "rgbd_rejection: ransac\n"
                          "rgbd_key_frame_distance_m: 0.4\n"
+                         "rgbd_orb_fast_threshold: 9\n"
                          "loop_closure: false\n"),
                    &options);
   EXPECT_EQ(options.slam.tracker.min_matching_ratio, 0.5);
@@ -47,6 +48,8 @@ TEST(OptionsFile, SetsTheNamedOptions) {
   EXPECT_EQ(options.rgbd_tracker.aligner.rejection, PairRejection::kRansac);
   EXPECT_EQ(options.visual_odometry.aligner.rejection, PairRejection::kRansac);
   EXPECT_EQ(options.rgbd_tracker.key_frame_distance_m, 0.4);
+  EXPECT_EQ(options.rgbd_tracker.aligner.orb_fast_threshold, 9);
+  EXPECT_EQ(options.visual_odometry.aligner.orb_fast_threshold, 9);
   EXPECT_FALSE(options.slam.loop_closure);
 }
 
