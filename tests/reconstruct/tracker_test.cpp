@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -53,8 +54,8 @@ double LargestErrorPassingColumn(const TrackerOptions& options) {
     input.T_odom_base = truth;
     input.points_base = VoxelDownsample(ScanToPoints(scan, {}, {}).points_base, 0.05);
     const TrackStep step = tracker.Track(static_cast<std::size_t>(i), input);
-    largest = std::max(largest, std::hypot(step.T_world_base.x_m - truth.x_m,
-                                           step.T_world_base.y_m - truth.y_m));
+    largest = std::max(
+        largest, std::hypot(step.T_world_base.x_m - truth.x_m, step.T_world_base.y_m - truth.y_m));
   }
   return largest;
 }
@@ -70,6 +71,60 @@ TEST(Tracker, PredictionHoldsThePoseWhereTheScanLeavesItOpen) {
   const double wandered_m = LargestErrorPassingColumn(without);
   EXPECT_GT(wandered_m, 1.0);
   EXPECT_LT(LargestErrorPassingColumn(TrackerOptions{}), wandered_m / 5);
+}
+
+// Routine 3 through a stand-in for the RGB-D tracker: it answers with a fixed pose and records
+// what the tracker tells it.
+class FixedRgbd final : public RgbdFallback {
+ public:
+  explicit FixedRgbd(std::optional<PlanarPose> pose) : pose_(pose) {}
+  std::optional<PlanarPose> AlignAt(const TrackInput&, const PlanarPose&,
+                                    const KeyFrameMap&) override {
+    ++asked_;
+    return pose_;
+  }
+  void OnTracked(const TrackInput&, const TrackStep& step, const KeyFrameMap&) override {
+    routines_.push_back(step.routine);
+  }
+  int asked_ = 0;
+  std::vector<Routine> routines_;
+
+ private:
+  std::optional<PlanarPose> pose_;
+};
+
+// Two scans in the room, then one without echoes (the laser on the ground) from `odometry`.
+TrackStep TrackIntoBlindScan(FixedRgbd* rgbd, const PlanarPose& odometry) {
+  TrackerOptions options;
+  KeyFrameMap map(options.key_frames, options.icp);
+  Tracker tracker(options, &map, rgbd);
+  for (int i = 0; i < 2; ++i) {
+    const PlanarPose pose{0.1 * i, 0, 0};
+    tracker.Track(static_cast<std::size_t>(i),
+                  {static_cast<TimestampNs>(i) * 100'000'000, testing::RoomPoints(pose), pose, {}});
+  }
+  return tracker.Track(2, {200'000'000, {}, odometry, {}});
+}
+
+TEST(Tracker, RoutineThreePlacesAScanTheLaserCannotWhenItsPoseAgreesWithThePrediction) {
+  FixedRgbd rgbd(PlanarPose{0.22, 0.01, 0.02});  // 2 cm off the odometry's 0.2 m
+  const TrackStep step = TrackIntoBlindScan(&rgbd, {0.2, 0, 0});
+  EXPECT_EQ(rgbd.asked_, 1);  // the laser placed the two room scans itself
+  EXPECT_EQ(step.routine, Routine::kRgbd);
+  EXPECT_NEAR(step.T_world_base.x_m, 0.22, 1e-9);  // the RGB-D pose as measured
+  EXPECT_NEAR(step.T_world_base.theta_rad, 0.02, 1e-9);
+  ASSERT_EQ(rgbd.routines_.size(), 3u);  // told every outcome
+  EXPECT_EQ(rgbd.routines_[0], Routine::kGlobal);
+  EXPECT_EQ(rgbd.routines_[2], Routine::kRgbd);
+}
+
+TEST(Tracker, RoutineThreeRejectsAPoseNeitherTheLaserNorThePredictionConfirms) {
+  FixedRgbd far(PlanarPose{3.0, 2.0, 1.0});  // metres and radians from the prediction
+  EXPECT_EQ(TrackIntoBlindScan(&far, {0.2, 0, 0}).routine, Routine::kOdometryOnly);
+  FixedRgbd none(std::nullopt);  // no frame or no alignment
+  const TrackStep step = TrackIntoBlindScan(&none, {0.2, 0, 0});
+  EXPECT_EQ(step.routine, Routine::kOdometryOnly);
+  EXPECT_NEAR(step.T_world_base.x_m, 0.2, 0.02);  // the odometry's step from the last pose
 }
 
 }  // namespace
