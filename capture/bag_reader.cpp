@@ -251,6 +251,14 @@ bool BagReader::metadata_rebuilt() const { return impl_->rebuilt; }
 
 const std::filesystem::path& BagReader::directory() const { return impl_->directory; }
 
+const TopicInfo& BagReader::RequireTopic(const std::string& name, const std::string& role) const {
+  const TopicInfo* topic = impl_->info.FindTopic(name);
+  if (topic == nullptr) {
+    throw BadInputError(impl_->directory.string() + ": no " + role + " topic " + name);
+  }
+  return *topic;
+}
+
 void BagReader::SetTopicFilter(const std::vector<std::string>& topics) {
   impl_->filter = topics;
   impl_->StartCursors();

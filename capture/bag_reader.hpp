@@ -38,6 +38,8 @@ class BagReader {
   const BagInfo& info() const;
   bool metadata_rebuilt() const;  // true when metadata.yaml was missing or disagreed
   const std::filesystem::path& directory() const;
+  // The topic's metadata. Throws BadInputError "BAG: no ROLE topic NAME" when the bag lacks it.
+  const TopicInfo& RequireTopic(const std::string& name, const std::string& role) const;
 
   // Restricts Next() to these topics (empty: all) and restarts from the first message.
   void SetTopicFilter(const std::vector<std::string>& topics);

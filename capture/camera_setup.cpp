@@ -10,23 +10,15 @@ namespace littermap {
 CameraSetup ReadCameraSetup(const std::filesystem::path& bag, const CameraSetupTopics& topics,
                             Extrinsic extrinsic) {
   BagReader reader(bag);
-  const auto has = [&reader](const std::string& topic) {
-    for (const auto& info : reader.info().topics) {
-      if (info.name == topic) return true;
-    }
-    return false;
-  };
-  if (!has(topics.camera_info))
-    throw BadInputError(bag.string() + ": no topic " + topics.camera_info);
+  reader.RequireTopic(topics.camera_info, "camera info");
   const bool need_tf = extrinsic == Extrinsic::kRequired;
-  if (need_tf && !has(topics.tf_static)) {
-    throw BadInputError(bag.string() + ": no topic " + topics.tf_static);
-  }
+  if (need_tf) reader.RequireTopic(topics.tf_static, "static transform");
+  const bool has_tf = reader.info().FindTopic(topics.tf_static) != nullptr;
   CameraSetup setup;
   bool have_info = false, have_tf = false;
   reader.SetTopicFilter({topics.camera_info, topics.tf_static});
   MessageStream stream(reader);
-  while (!have_info || (!have_tf && has(topics.tf_static))) {
+  while (!have_info || (!have_tf && has_tf)) {
     const auto message = stream.Next();
     if (!message) break;
     if (const auto* info = std::get_if<msg::CameraInfo>(&message->message); info && !have_info) {

@@ -13,26 +13,13 @@
 #include "core/error.hpp"
 
 namespace littermap::detect {
-namespace {
-
-void RequireTopic(const BagReader& reader, const std::string& topic, const std::string& role,
-                  std::uint64_t* count = nullptr) {
-  for (const auto& info : reader.info().topics) {
-    if (info.name != topic) continue;
-    if (count != nullptr) *count = info.message_count;
-    return;
-  }
-  throw BadInputError(reader.directory().string() + ": no " + role + " topic " + topic);
-}
-
-}  // namespace
 
 RgbdFrameReader::RgbdFrameReader(std::filesystem::path bag, RgbdTopics topics)
     : bag_(std::move(bag)), topics_(std::move(topics)) {
   {
     const BagReader reader(bag_);
-    RequireTopic(reader, topics_.colour, "colour image", &colour_count_);
-    RequireTopic(reader, topics_.depth, "depth image");
+    colour_count_ = reader.RequireTopic(topics_.colour, "colour image").message_count;
+    reader.RequireTopic(topics_.depth, "depth image");
   }
   const CameraSetup setup =
       ReadCameraSetup(bag_, {topics_.camera_info, topics_.tf_static, topics_.camera_frame});

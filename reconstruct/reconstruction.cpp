@@ -34,14 +34,6 @@ LaserScan ToScan(const msg::LaserScan& message) {
   return scan;
 }
 
-void RequireTopic(const BagReader& reader, const std::string& topic,
-                  const std::filesystem::path& bag, const char* what) {
-  for (const auto& info : reader.info().topics) {
-    if (info.name == topic) return;
-  }
-  throw BadInputError(bag.string() + ": no " + what + " topic " + topic);
-}
-
 }  // namespace
 
 void ReconstructionOptions::Validate() const {
@@ -82,11 +74,7 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
   const auto start = std::chrono::steady_clock::now();
   ReconstructionResult result;
   BagReader reader(bag);
-  RequireTopic(reader, options.scan_topic, bag, "laser scan");
-  std::uint64_t total = 0;
-  for (const auto& info : reader.info().topics) {
-    if (info.name == options.scan_topic) total = info.message_count;
-  }
+  const std::uint64_t total = reader.RequireTopic(options.scan_topic, "laser scan").message_count;
   std::vector<std::string> wanted = {options.scan_topic, options.odometry_topic, options.imu_topic};
   if (rgbd != nullptr) {
     wanted.push_back(options.colour_topic);
@@ -149,11 +137,7 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
 }
 
 bool HasLaser(const std::filesystem::path& bag, const ReconstructionOptions& options) {
-  const BagReader reader(bag);
-  for (const auto& info : reader.info().topics) {
-    if (info.name == options.scan_topic) return true;
-  }
-  return false;
+  return BagReader(bag).info().FindTopic(options.scan_topic) != nullptr;
 }
 
 ReconstructionResult ReconstructBagVisually(const std::filesystem::path& bag,
@@ -163,28 +147,20 @@ ReconstructionResult ReconstructBagVisually(const std::filesystem::path& bag,
                                             const ProgressCallback& progress) {
   options.Validate();
   const auto start = std::chrono::steady_clock::now();
-  {
-    const BagReader reader(bag);
-    bool colour = false;
-    for (const auto& info : reader.info().topics)
-      colour = colour || info.name == options.colour_topic;
-    if (!colour) {
-      throw BadInputError(bag.string() + ": no laser scan topic " + options.scan_topic +
-                          " (choose one with --scan-topic) and no colour image topic " +
-                          options.colour_topic + " for visual odometry");
-    }
+  BagReader reader(bag);
+  const TopicInfo* colour_info = reader.info().FindTopic(options.colour_topic);
+  if (colour_info == nullptr) {
+    throw BadInputError(bag.string() + ": no laser scan topic " + options.scan_topic +
+                        " (choose one with --scan-topic) and no colour image topic " +
+                        options.colour_topic + " for visual odometry");
   }
+  const std::uint64_t total = colour_info->message_count;
+  reader.RequireTopic(options.depth_topic, "depth image");
   CameraSetupTopics topics;
   topics.camera_info = options.camera_info_topic;
   topics.tf_static = options.tf_static_topic;
   const CameraSetup setup = ReadCameraSetup(bag, topics, Extrinsic::kOptional);
   VisualOdometry odometry(options.visual_odometry, CameraModelFromInfo(setup.info));
-  BagReader reader(bag);
-  std::uint64_t total = 0;
-  RequireTopic(reader, options.depth_topic, bag, "depth image");
-  for (const auto& info : reader.info().topics) {
-    if (info.name == options.colour_topic) total = info.message_count;
-  }
   reader.SetTopicFilter({options.colour_topic, options.depth_topic});
   MessageStream stream(reader);
   RgbdPairing pairing;
@@ -215,17 +191,13 @@ std::unique_ptr<RgbdTracker> MakeRgbdTracker(const std::filesystem::path& bag,
                                              const ReconstructionOptions& options,
                                              std::vector<std::string>* warnings) {
   if (!options.rgbd) return nullptr;
-  {
-    const BagReader reader(bag);
-    for (const std::string& topic :
-         {options.colour_topic, options.depth_topic, options.camera_info_topic}) {
-      bool present = false;
-      for (const auto& info : reader.info().topics) present = present || info.name == topic;
-      if (!present) {
-        warnings->push_back(bag.string() + ": no topic " + topic +
-                            "; tracking with the laser alone (no RGB-D routine)");
-        return nullptr;
-      }
+  const BagReader reader(bag);
+  for (const std::string& topic :
+       {options.colour_topic, options.depth_topic, options.camera_info_topic}) {
+    if (reader.info().FindTopic(topic) == nullptr) {
+      warnings->push_back(bag.string() + ": no topic " + topic +
+                          "; tracking with the laser alone (no RGB-D routine)");
+      return nullptr;
     }
   }
   CameraSetupTopics topics;
