@@ -34,6 +34,32 @@ LaserScan ToScan(const msg::LaserScan& message) {
   return scan;
 }
 
+// The latest reading if it is at most max_age_s from stamp_ns.
+template <typename T>
+std::optional<T> Recent(const std::optional<std::pair<TimestampNs, T>>& latest,
+                        TimestampNs stamp_ns, double max_age_s) {
+  if (latest && std::abs(ToSeconds(stamp_ns - latest->first)) <= max_age_s) return latest->second;
+  return std::nullopt;
+}
+
+CameraSetupTopics CameraTopics(const ReconstructionOptions& options) {
+  CameraSetupTopics topics;
+  topics.camera_info = options.camera_info_topic;
+  topics.tf_static = options.tf_static_topic;
+  return topics;
+}
+
+// Warnings, run time and rate of a pass over a bag that handled `done` scans or frames.
+ReconstructionResult Finished(const MessageStream& stream,
+                              std::chrono::steady_clock::time_point start, std::uint64_t done) {
+  ReconstructionResult result;
+  for (const std::string& warning : stream.warnings()) result.warnings.push_back(warning);
+  result.run_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.scans_per_s = result.run_time_s > 0 ? static_cast<double>(done) / result.run_time_s : 0.0;
+  return result;
+}
+
 }  // namespace
 
 void ReconstructionOptions::Validate() const {
@@ -72,7 +98,6 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
                                     const ProgressCallback& progress, RgbdTracker* rgbd) {
   options.Validate();
   const auto start = std::chrono::steady_clock::now();
-  ReconstructionResult result;
   BagReader reader(bag);
   const std::uint64_t total = reader.RequireTopic(options.scan_topic, "laser scan").message_count;
   std::vector<std::string> wanted = {options.scan_topic, options.odometry_topic, options.imu_topic};
@@ -102,38 +127,22 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
       std::optional<CompressedRgbd> frame = message->topic->name == options.colour_topic
                                                 ? pairing.AddColour(std::move(*image))
                                                 : pairing.AddDepth(std::move(*image));
-      if (frame && rgbd != nullptr) {
-        std::optional<PlanarPose> T_odom_base;
-        if (odometry &&
-            std::abs(ToSeconds(frame->stamp_ns - odometry->first)) <= options.max_odometry_age_s) {
-          T_odom_base = odometry->second;
-        }
-        rgbd->AddFrame(std::move(*frame), T_odom_base);
+      if (frame) {  // images are read only for an RGB-D tracker
+        const TimestampNs stamp_ns = frame->stamp_ns;
+        rgbd->AddFrame(std::move(*frame), Recent(odometry, stamp_ns, options.max_odometry_age_s));
       }
       continue;
     }
     const auto* laser = std::get_if<msg::LaserScan>(&message->message);
     if (laser == nullptr) continue;
     const LaserScan scan = ToScan(*laser);
-    std::optional<PlanarPose> T_odom_base;
-    if (odometry &&
-        std::abs(ToSeconds(scan.stamp_ns - odometry->first)) <= options.max_odometry_age_s) {
-      T_odom_base = odometry->second;
-    }
-    std::optional<Tilt> scan_tilt;
-    if (tilt && std::abs(ToSeconds(scan.stamp_ns - tilt->first)) <= options.max_odometry_age_s) {
-      scan_tilt = tilt->second;
-    }
-    pipeline->AddScan(scan, T_odom_base, scan_tilt);
+    pipeline->AddScan(scan, Recent(odometry, scan.stamp_ns, options.max_odometry_age_s),
+                      Recent(tilt, scan.stamp_ns, options.max_odometry_age_s));
     if (++done % 50 == 0) ReportProgress(progress, {task, done, total});
   }
   ReportProgress(progress, {task, done, total});
   pipeline->Finish();
-  for (const std::string& warning : stream.warnings()) result.warnings.push_back(warning);
-  result.run_time_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.scans_per_s = result.run_time_s > 0 ? static_cast<double>(done) / result.run_time_s : 0.0;
-  return result;
+  return Finished(stream, start, done);
 }
 
 bool HasLaser(const std::filesystem::path& bag, const ReconstructionOptions& options) {
@@ -156,10 +165,7 @@ ReconstructionResult ReconstructBagVisually(const std::filesystem::path& bag,
   }
   const std::uint64_t total = colour_info->message_count;
   reader.RequireTopic(options.depth_topic, "depth image");
-  CameraSetupTopics topics;
-  topics.camera_info = options.camera_info_topic;
-  topics.tf_static = options.tf_static_topic;
-  const CameraSetup setup = ReadCameraSetup(bag, topics, Extrinsic::kOptional);
+  const CameraSetup setup = ReadCameraSetup(bag, CameraTopics(options), Extrinsic::kOptional);
   VisualOdometry odometry(options.visual_odometry, CameraModelFromInfo(setup.info));
   reader.SetTopicFilter({options.colour_topic, options.depth_topic});
   MessageStream stream(reader);
@@ -179,12 +185,7 @@ ReconstructionResult ReconstructBagVisually(const std::filesystem::path& bag,
   }
   ReportProgress(progress, {task, done, total});
   *stats = odometry.stats();
-  ReconstructionResult result;
-  for (const std::string& warning : stream.warnings()) result.warnings.push_back(warning);
-  result.run_time_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.scans_per_s = result.run_time_s > 0 ? static_cast<double>(done) / result.run_time_s : 0.0;
-  return result;
+  return Finished(stream, start, done);
 }
 
 std::unique_ptr<RgbdTracker> MakeRgbdTracker(const std::filesystem::path& bag,
@@ -200,10 +201,7 @@ std::unique_ptr<RgbdTracker> MakeRgbdTracker(const std::filesystem::path& bag,
       return nullptr;
     }
   }
-  CameraSetupTopics topics;
-  topics.camera_info = options.camera_info_topic;
-  topics.tf_static = options.tf_static_topic;
-  const CameraSetup setup = ReadCameraSetup(bag, topics);
+  const CameraSetup setup = ReadCameraSetup(bag, CameraTopics(options));
   return std::make_unique<RgbdTracker>(options.rgbd_tracker, CameraModelFromInfo(setup.info),
                                        setup.T_base_camera);
 }
