@@ -17,6 +17,13 @@ double ViewAngle(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
   return std::acos(std::clamp(c, -1.0, 1.0));
 }
 
+// A pose carried by the odometry from one time to another (kept when either odometry is unknown).
+PlanarPose Carry(const PlanarPose& pose, const std::optional<PlanarPose>& T_odom_from,
+                 const std::optional<PlanarPose>& T_odom_to) {
+  if (!T_odom_from || !T_odom_to) return pose;
+  return Compose(pose, Between(*T_odom_from, *T_odom_to));
+}
+
 }  // namespace
 
 Eigen::Isometry3d LiftPose(const PlanarPose& T_world_base, const std::optional<Tilt>& tilt) {
@@ -72,18 +79,6 @@ const RgbdKeyPoints& RgbdTracker::FeaturesOf(Frame* frame) {
   return *frame->features;
 }
 
-PlanarPose RgbdTracker::AtFrame(const Frame& frame, const TrackInput& input,
-                                const PlanarPose& at_scan) const {
-  if (!frame.T_odom_base || !input.T_odom_base) return at_scan;
-  return Compose(at_scan, Between(*input.T_odom_base, *frame.T_odom_base));
-}
-
-PlanarPose RgbdTracker::AtScan(const Frame& frame, const TrackInput& input,
-                               const PlanarPose& at_frame) const {
-  if (!frame.T_odom_base || !input.T_odom_base) return at_frame;
-  return Compose(at_frame, Between(*frame.T_odom_base, *input.T_odom_base));
-}
-
 Eigen::Isometry3d RgbdTracker::CameraFromBase(const PlanarPose& T_world_base,
                                               const std::optional<Tilt>& tilt) const {
   return LiftPose(T_world_base, tilt) * T_base_camera_;
@@ -103,7 +98,7 @@ std::optional<PlanarPose> RgbdTracker::AlignAt(const TrackInput& input, const Pl
     frame->aligned = true;
     ++stats_.alignments;
     const Eigen::Isometry3d T_world_camera_predicted =
-        CameraFromBase(AtFrame(*frame, input, predicted), input.tilt);
+        CameraFromBase(Carry(predicted, input.T_odom_base, frame->T_odom_base), input.tilt);
     std::vector<std::pair<double, std::size_t>> candidates;
     for (std::size_t i = 0; i < key_frames_.size(); ++i) {
       const Eigen::Isometry3d T_world_kf = WorldCamera(key_frames_[i], map);
@@ -130,7 +125,7 @@ std::optional<PlanarPose> RgbdTracker::AlignAt(const TrackInput& input, const Pl
   }
   if (!frame->T_world_camera_aligned) return std::nullopt;
   const Eigen::Isometry3d T_world_base = *frame->T_world_camera_aligned * T_base_camera_.inverse();
-  return AtScan(*frame, input, ToPlanar(T_world_base));
+  return Carry(ToPlanar(T_world_base), frame->T_odom_base, input.T_odom_base);
 }
 
 void RgbdTracker::OnTracked(const TrackInput& input, const TrackStep& step,
@@ -138,31 +133,25 @@ void RgbdTracker::OnTracked(const TrackInput& input, const TrackStep& step,
   Frame* frame = FrameFor(input.stamp_ns);
   if (frame == nullptr) return;
   const bool by_laser = step.routine == Routine::kGlobal || step.routine == Routine::kBuffer;
-  const Eigen::Isometry3d T_world_scan = LiftPose(step.T_world_base, std::nullopt);
+  const bool by_rgbd = step.routine == Routine::kRgbd && frame->T_world_camera_aligned;
+  const Eigen::Isometry3d T_world_camera =
+      by_rgbd ? *frame->T_world_camera_aligned
+              : CameraFromBase(Carry(step.T_world_base, input.T_odom_base, frame->T_odom_base),
+                               input.tilt);
   if (!frame->recorded) {
     frame->recorded = true;
     CameraPose pose;
     pose.stamp_ns = frame->images.stamp_ns;
     pose.scan_index = step.scan_index;
-    Eigen::Isometry3d T_world_camera;
-    if (step.routine == Routine::kRgbd && frame->T_world_camera_aligned) {
-      pose.source = CameraPoseSource::kRgbd;
-      // The aligned pose, moved with the scan's pose (the tracker may have refined it).
-      T_world_camera = *frame->T_world_camera_aligned;
-    } else {
-      pose.source = by_laser ? CameraPoseSource::kLaser : CameraPoseSource::kOdometry;
-      T_world_camera = CameraFromBase(AtFrame(*frame, input, step.T_world_base), input.tilt);
-    }
-    pose.T_scan_camera = T_world_scan.inverse() * T_world_camera;
+    pose.source = by_rgbd    ? CameraPoseSource::kRgbd
+                  : by_laser ? CameraPoseSource::kLaser
+                             : CameraPoseSource::kOdometry;
+    pose.T_scan_camera = LiftPose(step.T_world_base, std::nullopt).inverse() * T_world_camera;
     camera_poses_.push_back(pose);
   }
   // Key frames come from frames the laser placed, and from aligned ones while it cannot (so a
   // long failure keeps a key frame near).
-  const bool by_rgbd = step.routine == Routine::kRgbd && frame->T_world_camera_aligned;
   if (!by_laser && !by_rgbd) return;
-  const Eigen::Isometry3d T_world_camera =
-      by_rgbd ? *frame->T_world_camera_aligned
-              : CameraFromBase(AtFrame(*frame, input, step.T_world_base), input.tilt);
   if (!key_frames_.empty()) {
     const Eigen::Isometry3d T_world_last = WorldCamera(key_frames_.back(), map);
     if ((T_world_camera.translation() - T_world_last.translation()).norm() <

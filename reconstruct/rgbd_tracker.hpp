@@ -89,9 +89,6 @@ class RgbdTracker final : public RgbdFallback {
   // The current frame if it is close enough in time to the scan.
   Frame* FrameFor(TimestampNs stamp_ns);
   const RgbdKeyPoints& FeaturesOf(Frame* frame);
-  // The base pose at the frame's time from a pose at the scan's time (and back), by odometry.
-  PlanarPose AtFrame(const Frame& frame, const TrackInput& input, const PlanarPose& at_scan) const;
-  PlanarPose AtScan(const Frame& frame, const TrackInput& input, const PlanarPose& at_frame) const;
   Eigen::Isometry3d CameraFromBase(const PlanarPose& T_world_base,
                                    const std::optional<Tilt>& tilt) const;
   Eigen::Isometry3d WorldCamera(const KeyFrame& key_frame, const KeyFrameMap& map) const;
