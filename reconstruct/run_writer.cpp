@@ -29,16 +29,14 @@ void WriteText(const std::filesystem::path& path, const std::string& text) {
 }
 
 void WriteRoutines(const std::filesystem::path& path, const std::vector<ScanRecord>& scans) {
-  std::ofstream out(path);
-  if (!out) throw UsageError(path.string() + ": cannot create");
-  out << "time,routine,matching_ratio\n";
+  std::string text = "time,routine,matching_ratio\n";
   char ratio[32];
   for (const ScanRecord& scan : scans) {
     std::snprintf(ratio, sizeof ratio, "%.4f", scan.matching_ratio);
-    out << FormatTumStamp(scan.stamp_ns) << ',' << RoutineName(scan.routine) << ',' << ratio
-        << '\n';
+    text += FormatTumStamp(scan.stamp_ns) + ',' + std::string(RoutineName(scan.routine)) + ',' +
+            ratio + '\n';
   }
-  if (!out) throw InternalError(path.string() + ": writing failed");
+  WriteText(path, text);
 }
 
 std::string_view SourceName(CameraPoseSource source) {
@@ -56,17 +54,14 @@ std::string_view SourceName(CameraPoseSource source) {
 void WriteCameraPoses(const std::filesystem::path& run_dir, const SlamPipeline& pipeline,
                       const RgbdTracker& rgbd) {
   std::vector<TumPose> poses;
-  const std::filesystem::path sources_path = run_dir / "camera_sources.csv";
-  std::ofstream sources(sources_path);
-  if (!sources) throw UsageError(sources_path.string() + ": cannot create");
-  sources << "time,source\n";
+  std::string sources = "time,source\n";
   for (const CameraPose& pose : rgbd.camera_poses()) {
     const Eigen::Isometry3d T_world_camera =
         LiftPose(pipeline.scans()[pose.scan_index].T_world_base, std::nullopt) * pose.T_scan_camera;
     poses.push_back(ToTum(pose.stamp_ns, T_world_camera));
-    sources << FormatTumStamp(pose.stamp_ns) << ',' << SourceName(pose.source) << '\n';
+    sources += FormatTumStamp(pose.stamp_ns) + ',' + std::string(SourceName(pose.source)) + '\n';
   }
-  if (!sources) throw InternalError(sources_path.string() + ": writing failed");
+  WriteText(run_dir / "camera_sources.csv", sources);
   WriteTumTrajectory(run_dir / "camera.tum", poses);
 }
 
