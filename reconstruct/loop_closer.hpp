@@ -12,7 +12,8 @@
 //   - ICP converged with a high matching ratio and a small residual;
 //   - the correction it implies agrees with the graph: no larger than the drift the tracker can
 //     have accumulated over the path between the two key frames;
-// and, after optimisation (in the caller), the loop edge must fit the optimised graph.
+// and, after optimisation (in the caller), the loop edge must fit the optimised graph; at the end
+// of the run every loop must still fit the final graph (PruneLoops).
 
 #include <cstddef>
 #include <optional>

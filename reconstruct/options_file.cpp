@@ -127,6 +127,8 @@ const std::map<std::string, Setter>& Setters() {
        Set<double>([](O& o) -> double& { return o.slam.edge_sigma_floor_m; })},
       {"edge_sigma_floor_rad",
        Set<double>([](O& o) -> double& { return o.slam.edge_sigma_floor_rad; })},
+      {"max_final_loop_chi2",
+       Set<double>([](O& o) -> double& { return o.slam.max_final_loop_chi2; })},
       {"max_loop_residual_m",
        Set<double>([](O& o) -> double& { return o.slam.max_loop_residual_m; })},
       {"map_cell_size_m", Set<double>([](O& o) -> double& { return o.slam.grid.cell_size_m; })},

@@ -5,6 +5,7 @@
 #include <functional>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <queue>
 #include <string>
 #include <utility>
@@ -173,6 +174,32 @@ double EdgeChi2(const std::vector<PlanarPose>& poses, const PoseGraphEdge& edge)
   Eigen::Vector3d e(predicted.x_m - edge.T_from_to.x_m, predicted.y_m - edge.T_from_to.y_m,
                     measured_error.theta_rad);
   return e.dot(edge.information * e);
+}
+
+LoopPruning PruneLoops(std::vector<PlanarPose>* poses, std::vector<PoseGraphEdge>* edges,
+                       double max_chi2, const PoseGraphOptions& options) {
+  LoopPruning pruning;
+  for (;;) {
+    std::optional<std::size_t> worst;
+    double worst_chi2 = max_chi2;
+    for (std::size_t i = 0; i < edges->size(); ++i) {
+      if (!(*edges)[i].loop) continue;
+      const double chi2 = EdgeChi2(*poses, (*edges)[i]);
+      if (chi2 > worst_chi2) {
+        worst_chi2 = chi2;
+        worst = i;
+      }
+    }
+    if (!worst) return pruning;
+    edges->erase(edges->begin() + static_cast<std::ptrdiff_t>(*worst));
+    ++pruning.removed;
+    std::vector<PlanarPose> optimised = *poses;
+    const PoseGraphResult result = OptimizePoseGraph(&optimised, *edges, options);
+    pruning.usable = result.usable;
+    if (!result.usable) return pruning;
+    pruning.final_cost = result.final_cost;
+    *poses = std::move(optimised);
+  }
 }
 
 }  // namespace littermap::reconstruct

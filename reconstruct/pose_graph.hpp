@@ -61,4 +61,18 @@ std::vector<double> GraphDistances(std::size_t poses, const std::vector<PoseGrap
 // information is right).
 double EdgeChi2(const std::vector<PlanarPose>& poses, const PoseGraphEdge& edge);
 
+struct LoopPruning {
+  std::size_t removed = 0;
+  bool usable = true;  // the last optimisation returned a usable solution
+  double final_cost = 0;
+};
+
+// Removes the loop edges an optimised graph cannot satisfy, worst first: while the loop edge
+// with the largest chi-squared (EdgeChi2) exceeds max_chi2, it is taken out and the graph
+// optimised again. Wrong loops that agree with each other can each pass a check made when they
+// were added, and the graph then bends to fit them; once the loops found later pull the other
+// way, the wrong ones stand out. Poses are updated only while the solutions are usable.
+LoopPruning PruneLoops(std::vector<PlanarPose>* poses, std::vector<PoseGraphEdge>* edges,
+                       double max_chi2, const PoseGraphOptions& options);
+
 }  // namespace littermap::reconstruct

@@ -33,6 +33,7 @@ void SlamOptions::Validate() const {
   if (!(max_loop_residual_m > 0) || !(max_loop_residual_rad > 0)) {
     throw UsageError("slam: loop residual limits must be > 0");
   }
+  if (!(max_final_loop_chi2 > 0)) throw UsageError("slam: max_final_loop_chi2 must be > 0");
   if (!(wide_loop_search_every_m > 0)) {
     throw UsageError("slam: wide_loop_search_every_m must be > 0");
   }
@@ -176,6 +177,7 @@ void SlamPipeline::Optimise() {
 
 void SlamPipeline::Finish() {
   if (!unchecked_loops_.empty()) Optimise();
+  PruneFinalLoops();
   quality_.key_frames = map_.key_frames().size();
   quality_.odometry_rejected = tracker_.odometry_rejected();
   const auto& frames = map_.key_frames();
@@ -210,6 +212,19 @@ void SlamPipeline::Finish() {
     const PlanarPose T_world_laser = Compose(scans_[i].T_world_base, T_base_laser_);
     grid_.InsertScan({T_world_laser.x_m, T_world_laser.y_m}, hits_of(i));
   }
+}
+
+void SlamPipeline::PruneFinalLoops() {
+  std::vector<PlanarPose> poses = map_.Poses();
+  const LoopPruning pruning =
+      PruneLoops(&poses, &edges_, options_.max_final_loop_chi2, options_.graph);
+  if (pruning.removed == 0) return;
+  // Edges removed before an unusable solution stay removed; the poses are the last usable ones.
+  quality_.loops_accepted -= pruning.removed;
+  quality_.loops_rejected_after_optimisation += pruning.removed;
+  quality_.optimisations += pruning.removed;
+  if (pruning.usable) quality_.final_cost = pruning.final_cost;
+  map_.SetPoses(poses);
 }
 
 std::vector<std::pair<TimestampNs, PlanarPose>> SlamPipeline::KeyFramePoses() const {

@@ -41,6 +41,9 @@ struct SlamOptions {
   // An optimised loop edge further than this from its measurement did not fit the graph.
   double max_loop_residual_m = 0.2;
   double max_loop_residual_rad = 0.05;
+  // At the end, loops whose chi-squared in the optimised graph exceeds this are removed
+  // (PruneLoops); 16.3 is the 99.9 % quantile with 3 degrees of freedom.
+  double max_final_loop_chi2 = 16.3;
   void Validate() const;
 };
 
@@ -95,6 +98,8 @@ class SlamPipeline {
   void AddGraphEdge(const TrackStep& step);
   void CloseLoops(std::size_t key_frame);
   void Optimise();
+  // The final check of the loops (PruneLoops), before the map is rendered.
+  void PruneFinalLoops();
 
   SlamOptions options_;
   PlanarPose T_base_laser_;

@@ -1,9 +1,11 @@
-// Pose graph: a synthetic loop brings drifted poses back to the truth; the first pose stays put.
+// Pose graph: a synthetic loop brings drifted poses back to the truth; the first pose stays put;
+// a loop the others contradict is pruned.
 
 #include "reconstruct/pose_graph.hpp"
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -79,6 +81,51 @@ TEST(PoseGraph, LoopReducesDriftOfBiasedOdometry) {
   const double before = MaxError(open, truth), after = MaxError(closed, truth);
   EXPECT_GT(before, 0.3);
   EXPECT_LT(after, before / 4) << before << " -> " << after;
+}
+
+TEST(PoseGraph, PruneLoopsRemovesTheLoopTheOthersContradict) {
+  const auto truth = Square();
+  const double bias = 0.2 * std::numbers::pi / 180;
+  auto edges = Edges(truth, bias, true);
+  const Eigen::Matrix3d information = Eigen::Vector3d(1e4, 1e4, 1e4).asDiagonal();
+  for (const auto& [from, to] : {std::pair<std::size_t, std::size_t>{2, 38}, {5, 35}, {8, 32}}) {
+    edges.push_back({from, to, Between(truth[from], truth[to]), information, true});
+  }
+  // A wrong loop: 0.6 m and 6 degrees off the truth.
+  PlanarPose wrong = Between(truth[12], truth[27]);
+  wrong = Compose(wrong, PlanarPose{0.6, 0.0, 6 * std::numbers::pi / 180});
+  edges.push_back({12, 27, wrong, information, true});
+  const std::size_t loops = 5;
+
+  auto poses = Integrate(edges, truth.size());
+  ASSERT_TRUE(OptimizePoseGraph(&poses, edges, {}).usable);
+  const double before = MaxError(poses, truth);
+  const LoopPruning pruning = PruneLoops(&poses, &edges, 16.3, {});
+  ASSERT_TRUE(pruning.usable);
+  EXPECT_EQ(pruning.removed, 1u);
+  std::size_t kept = 0;
+  for (const PoseGraphEdge& edge : edges) {
+    if (!edge.loop) continue;
+    ++kept;
+    EXPECT_FALSE(edge.from == 12 && edge.to == 27) << "the wrong loop stayed";
+    EXPECT_LE(EdgeChi2(poses, edge), 16.3);
+  }
+  EXPECT_EQ(kept, loops - 1);
+  const double after = MaxError(poses, truth);
+  EXPECT_LT(after, 0.05);
+  EXPECT_LT(after, before / 4) << before << " -> " << after;
+}
+
+TEST(PoseGraph, PruneLoopsKeepsLoopsThatFit) {
+  const auto truth = Square();
+  auto edges = Edges(truth, 0.2 * std::numbers::pi / 180, true);
+  auto poses = Integrate(edges, truth.size());
+  ASSERT_TRUE(OptimizePoseGraph(&poses, edges, {}).usable);
+  const auto optimised = poses;
+  const LoopPruning pruning = PruneLoops(&poses, &edges, 16.3, {});
+  EXPECT_EQ(pruning.removed, 0u);
+  EXPECT_EQ(edges.size(), truth.size());  // 39 odometry edges and the loop
+  EXPECT_EQ(poses, optimised);
 }
 
 TEST(PoseGraph, EdgeInformationRotatesIntoTheSourceFrame) {
