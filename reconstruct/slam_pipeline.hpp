@@ -42,8 +42,8 @@ struct SlamOptions {
   double max_loop_residual_m = 0.2;
   double max_loop_residual_rad = 0.05;
   // At the end, loops whose chi-squared in the optimised graph exceeds this are removed
-  // (PruneLoops); 16.3 is the 99.9 % quantile with 3 degrees of freedom.
-  double max_final_loop_chi2 = 16.3;
+  // (PruneLoops): the 95 % quantile with 3 degrees of freedom, the usual gate.
+  double max_final_loop_chi2 = 7.81;
   void Validate() const;
 };
 
