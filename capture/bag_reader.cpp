@@ -117,10 +117,10 @@ void BagReader::Impl::ReadTopics(StorageFile& file) {
   SqliteDatabase& database = *file.database;
   const bool has_qos = database.HasColumn("topics", "offered_qos_profiles");
   const bool has_hash = database.HasColumn("topics", "type_description_hash");
-  auto query = database.Prepare(std::string("SELECT id, name, type, serialization_format, ") +
-                                (has_qos ? "offered_qos_profiles" : "''") + ", " +
-                                (has_hash ? "type_description_hash" : "''") +
-                                " FROM topics ORDER BY id");
+  auto query =
+      database.Prepare(std::string("SELECT id, name, type, serialization_format, ") +
+                       (has_qos ? "offered_qos_profiles" : "''") + ", " +
+                       (has_hash ? "type_description_hash" : "''") + " FROM topics ORDER BY id");
   while (query.Step()) {
     TopicInfo topic;
     topic.name = query.ColumnText(1);
@@ -154,7 +154,8 @@ void BagReader::Impl::CountMessages() {
   TimestampNs first = 0, last = 0;
   for (std::size_t i = 0; i < files.size(); ++i) {
     auto query = files[i].database->Prepare(
-        "SELECT topic_id, COUNT(*), MIN(timestamp), MAX(timestamp) FROM messages GROUP BY topic_id");
+        "SELECT topic_id, COUNT(*), MIN(timestamp), MAX(timestamp) FROM messages GROUP BY "
+        "topic_id");
     BagFileInfo& file_info = info.files[i];
     file_info.message_count = 0;
     TimestampNs file_first = 0, file_last = 0;
