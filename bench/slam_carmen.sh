@@ -2,7 +2,8 @@
 # SLAM acceptance benchmark on the CARMEN logs (../shared/datasets/README.md): every log imported
 # with --odometry-noise 1, 2 and 3, reconstructed, and evaluated against the reference with
 # `littermap eval trajectory` (ATE RMSE after Horn alignment, RPE over 1 m pairs).
-# Prints one table row per log x seed: odometry ATE, littermap ATE, RPE, loops, scans/s.
+# Prints one table row per log x seed: odometry ATE, littermap ATE, RPE, loops, scans/s (each
+# reconstruction pinned to one core).
 #   bench/slam_carmen.sh [LITTERMAP] [WORK_DIR] [LOG_NAME...]
 # SEEDS="1 2 3" picks the odometry noise seeds, OPTIONS=FILE.yaml passes reconstruct --options.
 # A benchmark, not a test: it prints, it does not assert.
@@ -20,6 +21,8 @@ fi
 seeds=${SEEDS:-"1 2 3"}
 options=()
 if [[ -n ${OPTIONS:-} ]]; then options=(--options "$OPTIONS"); fi
+pin=()  # scans/s on one core
+if command -v taskset >/dev/null; then pin=(taskset -c 0); fi
 mkdir -p "$work"
 
 field() {  # field JSON_FILE KEY
@@ -38,7 +41,7 @@ for log in "${logs[@]}"; do
         --reference "$ref" --odometry-noise "$seed" >/dev/null
     fi
     rm -rf "$run"
-    "$littermap" -q reconstruct "$bag" -o "$run" "${options[@]}" >/dev/null 2>"$run.stderr" || {
+    "${pin[@]}" "$littermap" -q reconstruct "$bag" -o "$run" "${options[@]}" >/dev/null 2>"$run.stderr" || {
       echo "$log $seed: reconstruct failed: $(cat "$run.stderr")"; continue; }
     "$littermap" eval trajectory "$run/odometry.tum" "$ref" --json >"$run/odometry_eval.json"
     "$littermap" eval trajectory "$run/trajectory.tum" "$ref" --json >"$run/eval.json"

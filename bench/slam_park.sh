@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# SLAM speed and memory benchmark on the simulated parks: each world simulated once (cached in
+# WORK_DIR; park_large takes about 12 minutes), then reconstructed with the hybrid laser + RGB-D
+# tracker and with the laser alone, pinned to one core. Prints one row per world x mode: scans,
+# run time, scans/s, peak resident memory of the whole process, ATE and RPE against the truth.
+#   bench/slam_park.sh [LITTERMAP] [WORK_DIR] [WORLD...]     (WORLD: park_small, park_large, ...)
+# A benchmark, not a test: it prints, it does not assert.
+set -euo pipefail
+
+here=$(cd "$(dirname "$0")/.." && pwd)
+littermap=${1:-$here/build/cli/littermap}
+work=${2:-${TMPDIR:-/tmp}/littermap-slam-park}
+shift $(( $# > 2 ? 2 : $# ))
+worlds=("$@")
+if [[ ${#worlds[@]} -eq 0 ]]; then worlds=(park_small park_large); fi
+pin=()
+if command -v taskset >/dev/null; then pin=(taskset -c 0); fi
+mkdir -p "$work"
+
+# run_measured OUT_JSON COMMAND...: runs the command, writes its wall time and peak RSS.
+run_measured() {
+  python3 - "$@" <<'EOF'
+import json, resource, subprocess, sys, time
+out, command = sys.argv[1], sys.argv[2:]
+start = time.monotonic()
+subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
+wall_s = time.monotonic() - start
+peak_kib = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss  # kibibytes on Linux
+json.dump({"wall_s": wall_s, "peak_mib": peak_kib / 1024}, open(out, "w"))
+EOF
+}
+
+field() {  # field JSON_FILE KEY FORMAT
+  python3 -c 'import json,sys; print(sys.argv[3] % json.load(open(sys.argv[1]))[sys.argv[2]])' \
+    "$1" "$2" "$3"
+}
+
+printf '%-12s %-7s %7s %8s %8s %8s %8s %8s %6s\n' world mode scans time_s scans/s peak_MiB \
+  ATE_m RPE_tr_m loops
+for world in "${worlds[@]}"; do
+  bag=$work/$world/bag
+  truth=$work/$world/truth
+  if [[ ! -f $truth/trajectory.tum ]]; then
+    rm -rf "$work/$world"
+    mkdir -p "$work/$world"
+    "$littermap" -q simulate "$here/samples/worlds/$world.yaml" -o "$bag" --truth "$truth" \
+      >/dev/null
+  fi
+  for mode in hybrid laser; do
+    run=$work/$world/run-$mode
+    flags=()
+    if [[ $mode == laser ]]; then flags=(--no-rgbd); fi
+    rm -rf "$run"
+    run_measured "$run.time.json" "${pin[@]}" "$littermap" -q reconstruct "$bag" -o "$run" \
+      "${flags[@]}"
+    "$littermap" eval trajectory "$run/trajectory.tum" "$truth/trajectory.tum" --json \
+      >"$run/eval.json"
+    printf '%-12s %-7s %7s %8s %8s %8s %8s %8s %6s\n' "$world" "$mode" \
+      "$(field "$run/quality.json" scans %d)" "$(field "$run.time.json" wall_s %.1f)" \
+      "$(field "$run/quality.json" scans_per_s %.0f)" "$(field "$run.time.json" peak_mib %.0f)" \
+      "$(field "$run/eval.json" ate_rmse_m %.3f)" "$(field "$run/eval.json" rpe_trans_mean_m %.3f)" \
+      "$(field "$run/quality.json" loop_closures_accepted %d)"
+  done
+done
