@@ -21,13 +21,9 @@ fi
 seeds=${SEEDS:-"1 2 3"}
 options=()
 if [[ -n ${OPTIONS:-} ]]; then options=(--options "$OPTIONS"); fi
-pin=()  # scans/s on one core
-if command -v taskset >/dev/null; then pin=(taskset -c 0); fi
 mkdir -p "$work"
-
-field() {  # field JSON_FILE KEY
-  python3 -c 'import json,sys; print("%.4f" % json.load(open(sys.argv[1]))[sys.argv[2]])' "$1" "$2"
-}
+# shellcheck source=bench/common.sh
+source "$here/bench/common.sh"
 
 printf '%-16s %4s %9s %9s %9s %9s %6s %6s %8s %7s\n' log seed odom_ATE ATE RPE_tr RPE_rot \
   loops rej scans/s time_s
@@ -41,15 +37,16 @@ for log in "${logs[@]}"; do
         --reference "$ref" --odometry-noise "$seed" >/dev/null
     fi
     rm -rf "$run"
-    "${pin[@]}" "$littermap" -q reconstruct "$bag" -o "$run" "${options[@]}" >/dev/null 2>"$run.stderr" || {
+    "${pin[@]}" "$littermap" -q reconstruct "$bag" -o "$run" "${options[@]}" >/dev/null \
+      2>"$run.stderr" || {
       echo "$log $seed: reconstruct failed: $(cat "$run.stderr")"; continue; }
     "$littermap" eval trajectory "$run/odometry.tum" "$ref" --json >"$run/odometry_eval.json"
     "$littermap" eval trajectory "$run/trajectory.tum" "$ref" --json >"$run/eval.json"
     printf '%-16s %4s %9s %9s %9s %9s %6s %6s %8.0f %7.2f\n' "$log" "$seed" \
       "$(field "$run/odometry_eval.json" ate_rmse_m)" "$(field "$run/eval.json" ate_rmse_m)" \
       "$(field "$run/eval.json" rpe_trans_mean_m)" "$(field "$run/eval.json" rpe_rot_mean_deg)" \
-      "$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["loop_closures_accepted"])' "$run/quality.json")" \
-      "$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["loop_closures_rejected"])' "$run/quality.json")" \
+      "$(field "$run/quality.json" loop_closures_accepted %d)" \
+      "$(field "$run/quality.json" loop_closures_rejected %d)" \
       "$(field "$run/quality.json" scans_per_s)" "$(field "$run/quality.json" run_time_s)"
   done
 done

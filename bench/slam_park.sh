@@ -13,9 +13,9 @@ work=${2:-${TMPDIR:-/tmp}/littermap-slam-park}
 shift $(( $# > 2 ? 2 : $# ))
 worlds=("$@")
 if [[ ${#worlds[@]} -eq 0 ]]; then worlds=(park_small park_large); fi
-pin=()
-if command -v taskset >/dev/null; then pin=(taskset -c 0); fi
 mkdir -p "$work"
+# shellcheck source=bench/common.sh
+source "$here/bench/common.sh"
 
 # run_measured OUT_JSON COMMAND...: runs the command, writes its wall time and peak RSS.
 run_measured() {
@@ -30,18 +30,13 @@ json.dump({"wall_s": wall_s, "peak_mib": peak_kib / 1024}, open(out, "w"))
 EOF
 }
 
-field() {  # field JSON_FILE KEY FORMAT
-  python3 -c 'import json,sys; print(sys.argv[3] % json.load(open(sys.argv[1]))[sys.argv[2]])' \
-    "$1" "$2" "$3"
-}
-
 printf '%-12s %-7s %7s %8s %8s %8s %8s %8s %6s\n' world mode scans time_s scans/s peak_MiB \
   ATE_m RPE_tr_m loops
 for world in "${worlds[@]}"; do
   bag=$work/$world/bag
   truth=$work/$world/truth
   if [[ ! -f $truth/trajectory.tum ]]; then
-    rm -rf "$work/$world"
+    rm -rf "${work:?}/$world"
     mkdir -p "$work/$world"
     "$littermap" -q simulate "$here/samples/worlds/$world.yaml" -o "$bag" --truth "$truth" \
       >/dev/null

@@ -4,8 +4,8 @@
 #   scripts/bench.sh BUILD_DIR
 set -euo pipefail
 build=$1
-pin=()
-if command -v taskset >/dev/null; then pin=(taskset -c 0); fi
+# shellcheck source=bench/common.sh
+source "$(dirname "$0")/../bench/common.sh"
 for bench in "$build"/bench/*_bench; do
   echo "== $(basename "$bench")"
   if [[ $(basename "$bench") == capture_bench ]]; then
