@@ -34,8 +34,11 @@ MapRegistrationResult RegisterMap(const Points2& site_points, const Points2& run
   if (!coarse.found) return result;
   result.correlative_score = coarse.score;
   const IcpTarget target(std::move(site), options.icp);
+  // Two whole maps hold walls that agree to a cell, not to the millimetre ICP's convergence test
+  // asks for: its last stage may end still creeping along a wall. Whether the run lies where the
+  // site's walls are is what the matching ratio below decides.
   const IcpResult fine = MatchIcp(run, target, coarse.T_target_source, options.icp);
-  if (!fine.converged) return result;
+  result.icp_converged = fine.converged;
   result.T_site_run = fine.T_target_source;
   const double inlier_sq = options.icp.inlier_distance_m * options.icp.inlier_distance_m;
   std::size_t inliers = 0;

@@ -37,6 +37,7 @@ struct MapRegistrationResult {
   double matching_ratio = 0;       // share of the overlapping run points on the site's, [0, 1]
   std::size_t overlap_points = 0;  // run points where the site map knows the ground
   double correlative_score = 0;    // of the coarse match, in [0, 1]
+  bool icp_converged = false;      // informative: the matching ratio decides
   std::size_t run_points = 0;
   std::size_t site_points = 0;
 };

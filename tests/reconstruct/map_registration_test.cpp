@@ -69,6 +69,32 @@ TEST(MapRegistration, ARunThatMapsMoreThanTheSiteIsJudgedWhereTheyOverlap) {
   EXPECT_LT(RegisterMap(site, run, {}, {}).matching_ratio, 0.7);
 }
 
+TEST(MapRegistration, IcpThatStopsShortOfConvergenceIsJudgedByTheMatchingRatio) {
+  // Two iterations per stage and a convergence test no step passes: ICP never reports
+  // convergence, yet the coarse match it refines is right, and a different place stays refused.
+  MapRegistrationOptions options;
+  options.icp.max_iterations_per_stage = 2;
+  options.icp.convergence_translation_m = 1e-15;
+  options.icp.convergence_rotation_rad = 1e-15;
+  const Points2 site = WallPoints(testing::Room(), 0.01, 1);
+  const PlanarPose T_site_run{1.3, -0.8, 0.14};
+  Points2 run;
+  for (const Eigen::Vector2d& p : WallPoints(testing::Room(), 0.01, 2)) {
+    run.push_back(Transform(Inverse(T_site_run), p));
+  }
+  const MapRegistrationResult result = RegisterMap(site, run, {}, options);
+  EXPECT_FALSE(result.icp_converged);
+  ASSERT_TRUE(result.registered) << result.matching_ratio;
+  EXPECT_NEAR(result.T_site_run.x_m, T_site_run.x_m, 0.03);
+  EXPECT_NEAR(result.T_site_run.y_m, T_site_run.y_m, 0.03);
+  EXPECT_NEAR(result.T_site_run.theta_rad, T_site_run.theta_rad, 0.01);
+  EXPECT_GT(result.matching_ratio, 0.9);
+
+  const std::vector<testing::Segment> corridor = {
+      {{0, 0}, {30, 0}}, {{0, 2}, {30, 2}}, {{0, 0}, {0, 2}}};
+  EXPECT_FALSE(RegisterMap(site, WallPoints(corridor, 0.01, 2), {}, options).registered);
+}
+
 TEST(MapRegistration, RefusesADifferentPlace) {
   // A long corridor does not fit in the room anywhere.
   const std::vector<testing::Segment> corridor = {
