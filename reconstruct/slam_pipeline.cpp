@@ -25,7 +25,10 @@ void SlamOptions::Validate() const {
   loops.Validate();
   graph.Validate();
   grid.Validate();
-  if (!(map_max_range_m > 0)) throw UsageError("slam: map_max_range_m must be > 0");
+  // Map points are kept in centimetres in 16 bits (SlamPipeline::MapPoint).
+  if (!(map_max_range_m > 0) || map_max_range_m > 300) {
+    throw UsageError("slam: map_max_range_m must be in (0, 300]");
+  }
   if (!(edge_sigma_floor_m > 0) || !(edge_sigma_floor_rad > 0) || !(odometry_sigma_m > 0) ||
       !(odometry_sigma_rad > 0)) {
     throw UsageError("slam: edge sigma floors and odometry sigmas must be > 0");
@@ -86,13 +89,26 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<PlanarPose
   record.T_world_base = step.T_world_base;
   record.T_odom_base = T_odom_base;
   scans_.push_back(record);
-  std::vector<Eigen::Vector2f>& map_points = map_points_base_.emplace_back();
-  for (const Eigen::Vector2d& p : VoxelDownsample(points.points_base, options_.grid.cell_size_m)) {
-    map_points.push_back(p.cast<float>());
-  }
+  StoreMapPoints(points.points_base);
   if (step.new_key_frame && step.key_frame > 0) {
     AddGraphEdge(step);
     if (options_.loop_closure) CloseLoops(step.key_frame);
+  }
+}
+
+void SlamPipeline::StoreMapPoints(const Points2& points_base) {
+  const Points2 cells = VoxelDownsample(points_base, options_.grid.cell_size_m);
+  const Eigen::Vector2d laser_base(T_base_laser_.x_m, T_base_laser_.y_m);
+  const double max_range_sq = options_.map_max_range_m * options_.map_max_range_m;
+  const auto in_range = [&](const Eigen::Vector2d& p) {
+    return (p - laser_base).squaredNorm() <= max_range_sq;
+  };
+  std::vector<MapPoint>& stored = map_points_base_.emplace_back();
+  stored.reserve(static_cast<std::size_t>(std::count_if(cells.begin(), cells.end(), in_range)));
+  for (const Eigen::Vector2d& p : cells) {
+    if (!in_range(p)) continue;
+    stored.push_back({static_cast<std::int16_t>(std::lround(p.x() * 100)),
+                      static_cast<std::int16_t>(std::lround(p.y() * 100))});
   }
 }
 
@@ -181,15 +197,12 @@ void SlamPipeline::Finish() {
   quality_.key_frames = map_.key_frames().size();
   quality_.odometry_rejected = tracker_.odometry_rejected();
   const auto& frames = map_.key_frames();
-  const double max_range_sq = options_.map_max_range_m * options_.map_max_range_m;
   const auto hits_of = [&](std::size_t i) {
     Points2 hits;
     hits.reserve(map_points_base_[i].size());
-    for (const Eigen::Vector2f& point : map_points_base_[i]) {
-      const Eigen::Vector2d p = point.cast<double>();
-      const Eigen::Vector2d from_laser = p - Eigen::Vector2d(T_base_laser_.x_m, T_base_laser_.y_m);
-      if (from_laser.squaredNorm() <= max_range_sq)
-        hits.push_back(Transform(scans_[i].T_world_base, p));
+    for (const MapPoint& point : map_points_base_[i]) {
+      hits.push_back(
+          Transform(scans_[i].T_world_base, Eigen::Vector2d(point.x_cm, point.y_cm) / 100));
     }
     return hits;
   };

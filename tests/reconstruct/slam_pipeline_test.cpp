@@ -3,11 +3,13 @@
 
 #include "reconstruct/slam_pipeline.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include <gtest/gtest.h>
 
+#include "core/error.hpp"
 #include "synthetic_world.hpp"
 
 namespace littermap::reconstruct {
@@ -59,6 +61,41 @@ TEST(SlamPipeline, BadScansAndStampsAreCountedNotFatal) {
   EXPECT_NEAR(last.y_m, expected.y_m, 0.01);
   EXPECT_EQ(pipeline.scans().back().routine, Routine::kGlobal);
   EXPECT_FALSE(pipeline.map().empty());
+}
+
+TEST(SlamPipeline, MapDrawsTheWallsInRangeWhereTheyAre) {
+  SlamOptions options;
+  options.map_max_range_m = 6;
+  SlamPipeline pipeline(options, {});
+  // The first pose is the map's origin: the walls at x = -2.025 and 9.975, mid-cell.
+  const PlanarPose pose{2.025, 2.025, 0};
+  LaserScan scan = testing::ScanFrom(testing::Room(), pose, 1440);  // beams < 2 cm apart at 4 m
+  scan.stamp_ns = 100'000'000;
+  pipeline.AddScan(scan, pose);
+  pipeline.Finish();
+  const OccupancyGrid& map = pipeline.map();
+  const double cell_m = options.grid.cell_size_m;
+  const auto occupied = [&](double x, int j) {
+    return map.LogOdds(map.CellOf({x, (j + 0.5) * cell_m})) > 0;
+  };
+  // y from -1.5 m to 3 m: within 6 m of the near wall. One echo is kept per cell of the scan's
+  // own frame, in whole centimetres, so a wall cell may lose its echo to a neighbour: the wall
+  // is an unbroken line to within one cell, and nothing is drawn off it.
+  int near_cells = 0;
+  for (int j = -30; j < 60; ++j) {
+    near_cells += occupied(-2.025, j);
+    EXPECT_TRUE(occupied(-2.025, j - 1) || occupied(-2.025, j) || occupied(-2.025, j + 1))
+        << "gap at y " << (j + 0.5) * cell_m;
+    EXPECT_FALSE(occupied(-2.025 + cell_m, j)) << "y " << (j + 0.5) * cell_m;
+    EXPECT_FALSE(occupied(9.975, j)) << "beyond map_max_range_m, y " << (j + 0.5) * cell_m;
+  }
+  EXPECT_GE(near_cells, 60);  // of 90
+}
+
+TEST(SlamPipeline, MapRangeBeyondWhatItStoresIsAUsageError) {
+  SlamOptions options;
+  options.map_max_range_m = 301;
+  EXPECT_THROW(SlamPipeline(options, {}), UsageError);
 }
 
 }  // namespace
