@@ -33,13 +33,23 @@ Points2 WallPoints(const std::vector<testing::Segment>& walls, double noise_m, s
   return points;
 }
 
+// The room as a run's map whose frame sits at T_site_run in the site frame, with noise drawn
+// apart from the site map's (seed 1).
+Points2 RoomMappedFrom(const PlanarPose& T_site_run) {
+  Points2 run = WallPoints(testing::Room(), 0.01, 2);
+  for (Eigen::Vector2d& p : run) p = Transform(Inverse(T_site_run), p);
+  return run;
+}
+
+// A long corridor: it does not fit in the room anywhere.
+Points2 Corridor() {
+  return WallPoints({{{0, 0}, {30, 0}}, {{0, 2}, {30, 2}}, {{0, 0}, {0, 2}}}, 0.01, 2);
+}
+
 TEST(MapRegistration, FindsARunMapUnderAKnownOffset) {
   const Points2 site = WallPoints(testing::Room(), 0.01, 1);
   const PlanarPose T_site_run{1.3, -0.8, 0.14};  // 8 degrees
-  Points2 run;
-  for (const Eigen::Vector2d& p : WallPoints(testing::Room(), 0.01, 2)) {
-    run.push_back(Transform(Inverse(T_site_run), p));
-  }
+  const Points2 run = RoomMappedFrom(T_site_run);
   const MapRegistrationResult result = RegisterMap(site, run, {}, {});
   ASSERT_TRUE(result.registered) << result.matching_ratio;
   EXPECT_NEAR(result.T_site_run.x_m, T_site_run.x_m, 0.02);
@@ -55,10 +65,7 @@ TEST(MapRegistration, ARunThatMapsMoreThanTheSiteIsJudgedWhereTheyOverlap) {
     if (p.x() < 6) site.push_back(p);
   }
   const PlanarPose T_site_run{0.6, 0.4, 0.05};
-  Points2 run;
-  for (const Eigen::Vector2d& p : WallPoints(testing::Room(), 0.01, 2)) {
-    run.push_back(Transform(Inverse(T_site_run), p));
-  }
+  const Points2 run = RoomMappedFrom(T_site_run);
   const auto known = [](const Eigen::Vector2d& p) { return p.x() < 6; };
   const MapRegistrationResult overlap = RegisterMap(site, run, {}, {}, known);
   ASSERT_TRUE(overlap.registered) << overlap.matching_ratio;
@@ -78,10 +85,7 @@ TEST(MapRegistration, IcpThatStopsShortOfConvergenceIsJudgedByTheMatchingRatio) 
   options.icp.convergence_rotation_rad = 1e-15;
   const Points2 site = WallPoints(testing::Room(), 0.01, 1);
   const PlanarPose T_site_run{1.3, -0.8, 0.14};
-  Points2 run;
-  for (const Eigen::Vector2d& p : WallPoints(testing::Room(), 0.01, 2)) {
-    run.push_back(Transform(Inverse(T_site_run), p));
-  }
+  const Points2 run = RoomMappedFrom(T_site_run);
   const MapRegistrationResult result = RegisterMap(site, run, {}, options);
   EXPECT_FALSE(result.icp_converged);
   ASSERT_TRUE(result.registered) << result.matching_ratio;
@@ -90,17 +94,12 @@ TEST(MapRegistration, IcpThatStopsShortOfConvergenceIsJudgedByTheMatchingRatio) 
   EXPECT_NEAR(result.T_site_run.theta_rad, T_site_run.theta_rad, 0.01);
   EXPECT_GT(result.matching_ratio, 0.9);
 
-  const std::vector<testing::Segment> corridor = {
-      {{0, 0}, {30, 0}}, {{0, 2}, {30, 2}}, {{0, 0}, {0, 2}}};
-  EXPECT_FALSE(RegisterMap(site, WallPoints(corridor, 0.01, 2), {}, options).registered);
+  EXPECT_FALSE(RegisterMap(site, Corridor(), {}, options).registered);
 }
 
 TEST(MapRegistration, RefusesADifferentPlace) {
-  // A long corridor does not fit in the room anywhere.
-  const std::vector<testing::Segment> corridor = {
-      {{0, 0}, {30, 0}}, {{0, 2}, {30, 2}}, {{0, 0}, {0, 2}}};
   const MapRegistrationResult result =
-      RegisterMap(WallPoints(testing::Room(), 0.01, 1), WallPoints(corridor, 0.01, 2), {}, {});
+      RegisterMap(WallPoints(testing::Room(), 0.01, 1), Corridor(), {}, {});
   EXPECT_FALSE(result.registered);
   EXPECT_LT(result.matching_ratio, 0.5);
 }
