@@ -123,6 +123,9 @@ void RegisterReconstructCommand(CLI::App& app, CliContext& context) {
                     "Track and map without loop closure (for comparisons)");
   command->add_flag("--no-rgbd{false}", arguments->options.rgbd,
                     "Track with the laser alone, without the RGB-D routine (for comparisons)");
+  command->add_flag("--no-gyro{false}", arguments->options.gyro_heading,
+                    "Turn the odometry by the wheels alone, not by the IMU's yaw rate (for "
+                    "comparisons)");
   command->callback([arguments, &context] {
     context.run = [arguments, &context] { RunReconstruct(*arguments, context); };
   });

@@ -65,6 +65,7 @@ ReconstructionResult Finished(const MessageStream& stream,
 void ReconstructionOptions::Validate() const {
   if (scan_topic.empty()) throw UsageError("reconstruct: the scan topic must not be empty");
   if (!(max_odometry_age_s > 0)) throw UsageError("reconstruct: max_odometry_age_s must be > 0");
+  gyro.Validate();
   slam.Validate();
   rgbd_tracker.Validate();
   visual_odometry.Validate();
@@ -108,19 +109,27 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
   reader.SetTopicFilter(wanted);
   MessageStream stream(reader);
   RgbdPairing pairing;
-  std::optional<std::pair<TimestampNs, PlanarPose>> odometry;
+  GyroOdometry gyro(options.gyro);
+  std::optional<std::pair<TimestampNs, GyroOdometryPose>> odometry;
   std::optional<std::pair<TimestampNs, Tilt>> tilt;
   std::uint64_t done = 0;
   const std::string task = "reconstructing " + bag.filename().string();
   while (auto message = stream.Next()) {
     if (const auto* odom = std::get_if<msg::Odometry>(&message->message)) {
       const auto& pose = odom->pose.pose;
-      odometry.emplace(StampOf(odom->header), PlanarPose{pose.position.x, pose.position.y,
-                                                         YawOf(ToEigen(pose.orientation))});
+      const TimestampNs stamp_ns = StampOf(odom->header);
+      const PlanarPose T_odom_base{pose.position.x, pose.position.y,
+                                   YawOf(ToEigen(pose.orientation))};
+      odometry.emplace(stamp_ns, gyro.AddOdometry(stamp_ns, T_odom_base));
       continue;
     }
     if (const auto* imu = std::get_if<msg::Imu>(&message->message)) {
       tilt.emplace(StampOf(imu->header), TiltOf(imu->orientation));
+      gyro.AddPitch(tilt->second.pitch_rad);
+      // A covariance of -1 says the IMU does not measure angular velocity (sensor_msgs/Imu).
+      if (options.gyro_heading && imu->angular_velocity_covariance[0] != -1) {
+        gyro.AddYawRate(StampOf(imu->header), imu->angular_velocity.z);
+      }
       continue;
     }
     if (auto* image = std::get_if<msg::CompressedImage>(&message->message)) {
@@ -129,7 +138,9 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
                                                 : pairing.AddDepth(std::move(*image));
       if (frame) {  // images are read only for an RGB-D tracker
         const TimestampNs stamp_ns = frame->stamp_ns;
-        rgbd->AddFrame(std::move(*frame), Recent(odometry, stamp_ns, options.max_odometry_age_s));
+        const auto odometry_now = Recent(odometry, stamp_ns, options.max_odometry_age_s);
+        rgbd->AddFrame(std::move(*frame),
+                       odometry_now ? std::optional(odometry_now->T_odom_base) : std::nullopt);
       }
       continue;
     }

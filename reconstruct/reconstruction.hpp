@@ -9,6 +9,7 @@
 
 #include "capture/topics.hpp"
 #include "core/progress.hpp"
+#include "reconstruct/gyro_odometry.hpp"
 #include "reconstruct/rgbd_tracker.hpp"
 #include "reconstruct/slam_pipeline.hpp"
 #include "reconstruct/visual_odometry.hpp"
@@ -19,7 +20,10 @@ struct ReconstructionOptions {
   std::string scan_topic = topics::kScan;
   std::string odometry_topic = topics::kOdometry;
   std::string tf_static_topic = topics::kTfStatic;
-  std::string imu_topic = topics::kImu;  // tilt for the ground-hit filter, if recorded
+  // Tilt for the ground-hit filter and yaw rate for the odometry's heading, if recorded.
+  std::string imu_topic = topics::kImu;
+  bool gyro_heading = true;  // turn the odometry by the IMU's yaw rate (GyroOdometry)
+  GyroOdometryOptions gyro;
   // The RGB-D camera for routine 3, used when the bag has these topics and `rgbd` is set.
   std::string colour_topic = topics::kColor;
   std::string depth_topic = topics::kDepth;

@@ -113,6 +113,7 @@ void WriteRun(const std::filesystem::path& run_dir, const SlamPipeline& pipeline
   std::vector<TumPose> trajectory;
   for (const ScanRecord& scan : pipeline.scans()) {
     trajectory.push_back(TumPoseFromPlanar(scan.stamp_ns, scan.T_world_base));
+    trajectory.back().position_m.z() = scan.z_m;
   }
   WriteTumTrajectory(run_dir / "trajectory.tum", trajectory);
   // The odometry at the scans' times, to compare SLAM with odometry alone.

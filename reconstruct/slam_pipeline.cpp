@@ -51,8 +51,10 @@ SlamPipeline::SlamPipeline(const SlamOptions& options, const PlanarPose& T_base_
       loop_closer_(options.loops),
       grid_(options.grid) {}
 
-void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<PlanarPose>& T_odom_base,
+void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdometryPose>& odometry,
                            const std::optional<Tilt>& tilt) {
+  const std::optional<PlanarPose> T_odom_base =
+      odometry ? std::optional(odometry->T_odom_base) : std::nullopt;
   ++quality_.scans_in;
   if (last_stamp_ns_ && scan.stamp_ns < *last_stamp_ns_) {
     ++quality_.stamps_backwards;  // a TUM trajectory cannot go back in time: drop the scan
@@ -68,6 +70,7 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<PlanarPose
   TrackInput input;
   input.stamp_ns = scan.stamp_ns;
   input.T_odom_base = T_odom_base;
+  input.heading_from_gyro = odometry && odometry->heading_from_gyro;
   input.tilt = tilt;
   if (points.valid_beams >= options_.min_scan_points) {
     input.points_base = VoxelDownsample(points.points_base, options_.scan_voxel_size_m);
@@ -88,6 +91,12 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<PlanarPose
       Between(map_.key_frames()[step.key_frame].T_world_base, step.T_world_base);
   record.T_world_base = step.T_world_base;
   record.T_odom_base = T_odom_base;
+  if (odometry) {
+    if (!first_odometry_z_m_) first_odometry_z_m_ = odometry->z_m;
+    record.z_m = odometry->z_m - *first_odometry_z_m_;
+  } else if (!scans_.empty()) {
+    record.z_m = scans_.back().z_m;
+  }
   scans_.push_back(record);
   StoreMapPoints(points.points_base);
   if (step.new_key_frame && step.key_frame > 0) {

@@ -14,6 +14,7 @@
 #include "core/laser_scan.hpp"
 #include "core/planar_pose.hpp"
 #include "core/time.hpp"
+#include "reconstruct/gyro_odometry.hpp"
 #include "reconstruct/loop_closer.hpp"
 #include "reconstruct/occupancy_grid.hpp"
 #include "reconstruct/pose_graph.hpp"
@@ -55,8 +56,9 @@ struct ScanRecord {
   double matching_ratio = 0;
   std::size_t key_frame = 0;
   PlanarPose T_keyframe_base;
-  PlanarPose T_world_base;                // final, after optimisation
-  std::optional<PlanarPose> T_odom_base;  // the odometry used, for comparisons
+  PlanarPose T_world_base;  // final, after optimisation
+  double z_m = 0;           // height above where the run started, from the odometry (GyroOdometry)
+  std::optional<PlanarPose> T_odom_base;  // the odometry used (gyro-turned), for comparisons
 };
 
 struct SlamQuality {
@@ -84,8 +86,9 @@ class SlamPipeline {
   SlamPipeline(const SlamOptions& options, const PlanarPose& T_base_laser,
                RgbdFallback* rgbd = nullptr);
 
+  // odometry: at the scan's time, if any (wheels alone, or turned by a gyro: GyroOdometry);
   // tilt: the base's roll and pitch at the scan's time (IMU), if known.
-  void AddScan(const LaserScan& scan, const std::optional<PlanarPose>& T_odom_base,
+  void AddScan(const LaserScan& scan, const std::optional<GyroOdometryPose>& odometry,
                const std::optional<Tilt>& tilt = std::nullopt);
   // Final optimisation; fills the scans' final poses and renders the map.
   void Finish();
@@ -113,6 +116,7 @@ class SlamPipeline {
   std::vector<PoseGraphEdge> edges_;
   std::vector<std::size_t> unchecked_loops_;  // indices into edges_ since the last optimisation
   std::vector<ScanRecord> scans_;
+  std::optional<double> first_odometry_z_m_;
   // Every scan's echoes for the map, one per map cell, within map_max_range_m, relative to the
   // base in whole centimetres: a 15-minute run at 40 Hz keeps 34 000 scans until the end (440 MB
   // at full resolution in double, 60 MB like this).

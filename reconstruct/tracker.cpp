@@ -77,9 +77,10 @@ void TrackerOptions::Validate() const {
   }
   if (!(odometry_sigma_m > 0) || !(odometry_sigma_rad > 0) || !(odometry_sigma_per_m >= 0) ||
       !(odometry_sigma_rad_per_m >= 0) || !(odometry_sigma_rad_per_rad >= 0) ||
-      !(constant_velocity_sigma_factor >= 1)) {
+      !(constant_velocity_sigma_factor >= 1) || !(gyro_sigma_rad > 0) ||
+      !(gyro_sigma_rad_per_s >= 0) || !(gyro_sigma_rad_per_rad >= 0)) {
     throw UsageError(
-        "tracker: odometry sigmas must be > 0 (their per-motion shares >= 0) and "
+        "tracker: odometry and gyro sigmas must be > 0 (their per-motion shares >= 0) and "
         "constant_velocity_sigma_factor >= 1");
   }
 }
@@ -115,15 +116,20 @@ PlanarPose Tracker::Predict(const TrackInput& input, bool* odometry_used) {
 }
 
 Eigen::Matrix3d Tracker::PredictionInformation(const PlanarPose& from, const PlanarPose& to,
-                                               bool odometry_used) const {
+                                               double elapsed_s, Prediction prediction) const {
   const PlanarPose motion = Between(from, to);
   const double distance_m = std::hypot(motion.x_m, motion.y_m);
-  const double factor = odometry_used ? 1 : options_.constant_velocity_sigma_factor;
+  const double turn_rad = std::abs(motion.theta_rad);
+  const double factor =
+      prediction == Prediction::kConstantVelocity ? options_.constant_velocity_sigma_factor : 1;
   const double sigma_m =
       factor * (options_.odometry_sigma_m + options_.odometry_sigma_per_m * distance_m);
   const double sigma_rad =
-      factor * (options_.odometry_sigma_rad + options_.odometry_sigma_rad_per_m * distance_m +
-                options_.odometry_sigma_rad_per_rad * std::abs(motion.theta_rad));
+      prediction == Prediction::kGyroOdometry
+          ? options_.gyro_sigma_rad + options_.gyro_sigma_rad_per_s * std::max(elapsed_s, 0.0) +
+                options_.gyro_sigma_rad_per_rad * turn_rad
+          : factor * (options_.odometry_sigma_rad + options_.odometry_sigma_rad_per_m * distance_m +
+                      options_.odometry_sigma_rad_per_rad * turn_rad);
   return DiagonalInformation(sigma_m, sigma_rad);
 }
 
@@ -173,6 +179,8 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
         }
       }
     }
+    // A gyro anchor's odometry must be turned by the gyro all along.
+    if (anchor_ && anchor_->heading_from_gyro && !input.heading_from_gyro) anchor_.reset();
     if (step.information.isZero()) {
       step.routine = Routine::kOdometryOnly;
     } else if (step.routine == Routine::kRgbd) {
@@ -182,11 +190,21 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
       // every scan cannot add the slides up between two key frames.
       const PlanarPose from_anchor =
           Compose(anchor_->T_world_base, Between(anchor_->T_odom_base, *input.T_odom_base));
-      FuseWithPrediction(from_anchor,
-                         PredictionInformation(anchor_->T_world_base, from_anchor, true), &step);
+      FuseWithPrediction(
+          from_anchor,
+          PredictionInformation(
+              anchor_->T_world_base, from_anchor, ToSeconds(input.stamp_ns - anchor_->stamp_ns),
+              anchor_->heading_from_gyro ? Prediction::kGyroOdometry : Prediction::kOdometry),
+          &step);
     } else {
-      FuseWithPrediction(predicted, PredictionInformation(pose_, predicted, step.odometry_used),
-                         &step);
+      const Prediction prediction = !step.odometry_used       ? Prediction::kConstantVelocity
+                                    : input.heading_from_gyro ? Prediction::kGyroOdometry
+                                                              : Prediction::kOdometry;
+      FuseWithPrediction(
+          predicted,
+          PredictionInformation(pose_, predicted, ToSeconds(input.stamp_ns - last_stamp_ns_),
+                                prediction),
+          &step);
     }
     if (!step.odometry_used) anchor_.reset();
     const double dt = ToSeconds(input.stamp_ns - last_stamp_ns_);
@@ -215,7 +233,7 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
     step.key_frame = map_->key_frames().size() - 1;
   }
   if (!anchor_ && input.T_odom_base && Finite(*input.T_odom_base)) {
-    anchor_ = Anchor{pose_, *input.T_odom_base};
+    anchor_ = Anchor{pose_, *input.T_odom_base, input.stamp_ns, input.heading_from_gyro};
   }
   if (buffer_.NeedsFrame(pose_) && step.routine != Routine::kOdometryOnly &&
       step.routine != Routine::kRgbd) {

@@ -56,6 +56,11 @@ struct TrackerOptions {
   double odometry_sigma_rad_per_m = 0.02;
   double odometry_sigma_rad_per_rad = 0.05;
   double constant_velocity_sigma_factor = 10;
+  // The heading of odometry turned by a gyro (GyroOdometry) drifts with time, not distance, and
+  // far less: standard deviations of its heading, a floor plus drift and scale error.
+  double gyro_sigma_rad = 0.001;
+  double gyro_sigma_rad_per_s = 0.0006;
+  double gyro_sigma_rad_per_rad = 0.002;
   void Validate() const;
 };
 
@@ -64,6 +69,7 @@ struct TrackInput {
   Points2 points_base;                    // downsampled scan points, at least a few
   std::optional<PlanarPose> T_odom_base;  // odometry at the scan's time, if any
   std::optional<Tilt> tilt;               // roll and pitch of the base (IMU), if known
+  bool heading_from_gyro = false;         // the odometry's turn since the last scan is a gyro's
 };
 
 struct TrackStep {
@@ -100,9 +106,11 @@ class Tracker {
 
  private:
   PlanarPose Predict(const TrackInput& input, bool* odometry_used);
-  // Information of a pose predicted by odometry (or constant velocity) from pose `from`.
+  // How a prediction was made: odometry (its heading from the gyro or not) or constant velocity.
+  enum class Prediction { kOdometry, kGyroOdometry, kConstantVelocity };
+  // Information of a pose predicted from pose `from`, elapsed_s later.
   Eigen::Matrix3d PredictionInformation(const PlanarPose& from, const PlanarPose& to,
-                                        bool odometry_used) const;
+                                        double elapsed_s, Prediction prediction) const;
 
   TrackerOptions options_;
   KeyFrameMap* map_;
@@ -118,6 +126,8 @@ class Tracker {
   struct Anchor {
     PlanarPose T_world_base;
     PlanarPose T_odom_base;
+    TimestampNs stamp_ns = 0;
+    bool heading_from_gyro = false;  // and every odometry step since
   };
   std::optional<Anchor> anchor_;
   double path_length_m_ = 0;

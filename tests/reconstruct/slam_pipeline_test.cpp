@@ -27,24 +27,24 @@ TEST(SlamPipeline, BadScansAndStampsAreCountedNotFatal) {
   PlanarPose truth{2, 2, 0};
   TimestampNs t = step;
   for (int i = 0; i < 10; ++i, t += step) {
-    pipeline.AddScan(RoomScan(truth, t), truth);
+    pipeline.AddScan(RoomScan(truth, t), GyroOdometryPose{truth});
     truth = Compose(truth, {0.1, 0, 0.01});
   }
   LaserScan nan_scan = RoomScan(truth, t);
   for (float& r : nan_scan.ranges_m) r = std::numeric_limits<float>::quiet_NaN();
-  pipeline.AddScan(nan_scan, truth);
+  pipeline.AddScan(nan_scan, GyroOdometryPose{truth});
   t += step;
   LaserScan max_range = RoomScan(truth, t);
   for (float& r : max_range.ranges_m) r = static_cast<float>(max_range.range_max_m);
-  pipeline.AddScan(max_range, std::nullopt);               // and no odometry either
-  pipeline.AddScan(RoomScan(truth, t), truth);             // duplicate stamp
-  pipeline.AddScan(RoomScan(truth, t - 3 * step), truth);  // back in time
+  pipeline.AddScan(max_range, std::nullopt);                      // and no odometry either
+  pipeline.AddScan(RoomScan(truth, t), GyroOdometryPose{truth});  // duplicate stamp
+  pipeline.AddScan(RoomScan(truth, t - 3 * step), GyroOdometryPose{truth});  // back in time
   t += step;
   LaserScan no_beams;
   no_beams.stamp_ns = t;
-  pipeline.AddScan(no_beams, truth);  // no beams at all
+  pipeline.AddScan(no_beams, GyroOdometryPose{truth});  // no beams at all
   t += step;
-  pipeline.AddScan(RoomScan(truth, t), truth);
+  pipeline.AddScan(RoomScan(truth, t), GyroOdometryPose{truth});
   pipeline.Finish();
 
   const SlamQuality& quality = pipeline.quality();
@@ -71,7 +71,7 @@ TEST(SlamPipeline, MapDrawsTheWallsInRangeWhereTheyAre) {
   const PlanarPose pose{2.025, 2.025, 0};
   LaserScan scan = testing::ScanFrom(testing::Room(), pose, 1440);  // beams < 2 cm apart at 4 m
   scan.stamp_ns = 100'000'000;
-  pipeline.AddScan(scan, pose);
+  pipeline.AddScan(scan, GyroOdometryPose{pose});
   pipeline.Finish();
   const OccupancyGrid& map = pipeline.map();
   const double cell_m = options.grid.cell_size_m;
