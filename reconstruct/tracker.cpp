@@ -184,7 +184,15 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
     if (step.information.isZero()) {
       step.routine = Routine::kOdometryOnly;
     } else if (step.routine == Routine::kRgbd) {
-      // Routine 3 runs because the prediction failed to match: it is not fused with it.
+      // Routine 3 runs because the prediction failed to match: it is not fused with its
+      // position. A gyro's heading is still better than the camera's.
+      if (step.odometry_used && input.heading_from_gyro) {
+        Eigen::Matrix3d heading = Eigen::Matrix3d::Zero();
+        heading(2, 2) =
+            PredictionInformation(pose_, predicted, ToSeconds(input.stamp_ns - last_stamp_ns_),
+                                  Prediction::kGyroOdometry)(2, 2);
+        FuseWithPrediction(predicted, heading, &step);
+      }
     } else if (step.odometry_used && anchor_) {
       // The odometry since the anchor, not since the last scan: a match that slides a little
       // every scan cannot add the slides up between two key frames.

@@ -8,7 +8,9 @@
 //      with the prediction;
 //   otherwise keep the predicted pose (routine "odometry-only").
 // The prediction is the odometry increment since the last scan, or a constant-velocity model
-// when odometry is missing or implausible.
+// when odometry is missing or implausible. Matches of routines 1 and 2 are fused with it, each
+// weighted by its information; routine 3's pose only in heading, and only where a gyro turned
+// the odometry (the wheels may have slipped where the laser lost the map).
 
 #include <cstddef>
 #include <optional>

@@ -93,17 +93,19 @@ class FixedRgbd final : public RgbdFallback {
   std::optional<PlanarPose> pose_;
 };
 
-// Two scans in the room, then one without echoes (the laser on the ground) from `odometry`.
-TrackStep TrackIntoBlindScan(FixedRgbd* rgbd, const PlanarPose& odometry) {
+// Two scans in the room, then one without echoes (the laser on the ground) from `odometry`,
+// turned by a gyro or by the wheels.
+TrackStep TrackIntoBlindScan(FixedRgbd* rgbd, const PlanarPose& odometry, bool gyro = false) {
   TrackerOptions options;
   KeyFrameMap map(options.key_frames, options.icp);
   Tracker tracker(options, &map, rgbd);
   for (int i = 0; i < 2; ++i) {
     const PlanarPose pose{0.1 * i, 0, 0};
-    tracker.Track(static_cast<std::size_t>(i),
-                  {static_cast<TimestampNs>(i) * 100'000'000, testing::RoomPoints(pose), pose, {}});
+    tracker.Track(
+        static_cast<std::size_t>(i),
+        {static_cast<TimestampNs>(i) * 100'000'000, testing::RoomPoints(pose), pose, {}, gyro});
   }
-  return tracker.Track(2, {200'000'000, {}, odometry, {}});
+  return tracker.Track(2, {200'000'000, {}, odometry, {}, gyro});
 }
 
 TEST(Tracker, RoutineThreePlacesAScanTheLaserCannotWhenItsPoseAgreesWithThePrediction) {
@@ -116,6 +118,17 @@ TEST(Tracker, RoutineThreePlacesAScanTheLaserCannotWhenItsPoseAgreesWithThePredi
   ASSERT_EQ(rgbd.routines_.size(), 3u);  // told every outcome
   EXPECT_EQ(rgbd.routines_[0], Routine::kGlobal);
   EXPECT_EQ(rgbd.routines_[2], Routine::kRgbd);
+}
+
+TEST(Tracker, RoutineThreeTakesItsHeadingFromAGyroAndItsPositionFromTheCamera) {
+  FixedRgbd rgbd(PlanarPose{0.22, 0.01, 0.02});
+  const TrackStep step = TrackIntoBlindScan(&rgbd, {0.2, 0, 0}, true);
+  EXPECT_EQ(step.routine, Routine::kRgbd);
+  EXPECT_NEAR(step.T_world_base.x_m, 0.22, 1e-9);  // the wheels may have slipped: not fused
+  EXPECT_NEAR(step.T_world_base.y_m, 0.01, 1e-9);
+  // The gyro's 1 mrad against the camera's 20 mrad: the predicted heading stays (0, within the
+  // 2 mrad the room scans left), not the camera's 0.02 rad.
+  EXPECT_NEAR(step.T_world_base.theta_rad, 0, 0.003);
 }
 
 TEST(Tracker, RoutineThreeRejectsAPoseNeitherTheLaserNorThePredictionConfirms) {
