@@ -64,33 +64,40 @@ std::optional<double> GyroOdometry::SlopePitch() {
 }
 
 GyroOdometryPose GyroOdometry::AddOdometry(TimestampNs stamp_ns, const PlanarPose& T_odom_base) {
-  if (last_ && stamp_ns <= last_->stamp_ns) {  // out of order: nothing learnt
-    GyroOdometryPose pose = pose_;
-    pose.heading_from_gyro = false;
+  GyroOdometryPose pose;
+  if (last_ && stamp_ns <= last_->stamp_ns) {  // out of order: passed on, nothing learnt
+    pose.T_odom_base = Fused(T_odom_base);
+    pose.z_m = z_m_;
     return pose;
   }
   const Reading now{stamp_ns, T_odom_base, YawAt(stamp_ns)};
-  pose_.heading_from_gyro = false;
   const std::optional<double> pitch_rad = SlopePitch();
-  if (!last_) {
-    pose_.T_odom_base = T_odom_base;
-  } else {
+  if (last_) {
     PlanarPose step = Between(last_->T_wheels_base, T_odom_base);
-    // The yaw is continuous between the two readings only if no gap restarted it in between.
-    if (now.yaw_rad && last_->yaw_rad && *first_rate_ns_ <= last_->stamp_ns) {
-      step.theta_rad = WrapAngle(*now.yaw_rad - *last_->yaw_rad);
-      pose_.heading_from_gyro = true;
-    }
-    pose_.T_odom_base = Compose(pose_.T_odom_base, step);
     path_m_ += std::hypot(step.x_m, step.y_m);
     if (pitch_rad && last_pitch_rad_) {
       // base_link's x axis climbs at -sin(pitch).
-      pose_.z_m -= step.x_m * std::sin(0.5 * (*pitch_rad + *last_pitch_rad_));
+      z_m_ -= step.x_m * std::sin(0.5 * (*pitch_rad + *last_pitch_rad_));
+    }
+    // The yaw is continuous between the two readings only if no gap restarted it in between.
+    if (now.yaw_rad && last_->yaw_rad && *first_rate_ns_ <= last_->stamp_ns) {
+      step.theta_rad = WrapAngle(*now.yaw_rad - *last_->yaw_rad);
+      const PlanarPose fused = Compose(Fused(last_->T_wheels_base), step);
+      T_fused_wheels_ = Compose(fused, Inverse(T_odom_base));
+      turned_ = true;
+      pose.heading_from_gyro = true;
     }
   }
   last_ = now;
   last_pitch_rad_ = pitch_rad;
-  return pose_;
+  pose.T_odom_base = Fused(T_odom_base);
+  pose.z_m = z_m_;
+  return pose;
+}
+
+PlanarPose GyroOdometry::Fused(const PlanarPose& T_wheels_base) const {
+  // Until the gyro turns a step, the wheels' pose exactly as read.
+  return turned_ ? Compose(T_fused_wheels_, T_wheels_base) : T_wheels_base;
 }
 
 }  // namespace littermap::reconstruct

@@ -41,13 +41,16 @@ class GyroOdometry {
   // The base's pitch against gravity (IMU orientation, ROS: positive puts the nose down); the
   // latest holds for the next odometry step.
   void AddPitch(double pitch_rad);
-  // The fused pose at a wheel odometry reading. The first reading starts the fused odometry
-  // where the wheels are; a reading out of order leaves it where it was.
+  // The fused pose at a wheel odometry reading. The fused odometry starts where the wheels are
+  // and stays on them until the gyro turns a step; a reading out of order is passed on (moved
+  // like the others) but changes nothing.
   GyroOdometryPose AddOdometry(TimestampNs stamp_ns, const PlanarPose& T_odom_base);
 
  private:
   // The integrated yaw at stamp_ns, if the gyro covers it.
   std::optional<double> YawAt(TimestampNs stamp_ns) const;
+  // The fused pose of a wheels' pose.
+  PlanarPose Fused(const PlanarPose& T_wheels_base) const;
   // The latest pitch, or the slope's where it is a bump's; records it in recent_pitch_.
   std::optional<double> SlopePitch();
 
@@ -63,7 +66,10 @@ class GyroOdometry {
     std::optional<double> yaw_rad;
   };
   std::optional<Reading> last_;
-  GyroOdometryPose pose_;
+  // The fused odometry is the wheels' moved by this, which each gyro-turned step updates.
+  PlanarPose T_fused_wheels_;
+  bool turned_ = false;
+  double z_m_ = 0;
   // The pitch climbed at since the last odometry reading; the pitches over the last
   // slope_window_m of path (distance driven, pitch).
   std::optional<double> pitch_rad_, last_pitch_rad_;

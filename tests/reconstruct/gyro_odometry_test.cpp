@@ -81,17 +81,28 @@ TEST(GyroOdometry, IgnoresReadingsOutOfOrderAndRejectsBadOptions) {
   GyroOdometry fused;
   fused.AddYawRate(kStepNs, 0.1);
   const GyroOdometryPose first = fused.AddOdometry(kStepNs, {1, 2, 0.5});
-  EXPECT_DOUBLE_EQ(first.T_odom_base.x_m, 1);  // starts where the wheels are
-  const GyroOdometryPose back = fused.AddOdometry(0, {5, 5, 0});
+  EXPECT_DOUBLE_EQ(first.T_odom_base.x_m, 1);                     // starts where the wheels are
+  const GyroOdometryPose back = fused.AddOdometry(0, {5, 5, 0});  // passed on, as read
   EXPECT_FALSE(back.heading_from_gyro);
-  EXPECT_DOUBLE_EQ(back.T_odom_base.x_m, 1);
-  EXPECT_DOUBLE_EQ(back.T_odom_base.theta_rad, 0.5);
+  EXPECT_DOUBLE_EQ(back.T_odom_base.x_m, 5);
+  EXPECT_DOUBLE_EQ(back.T_odom_base.theta_rad, 0);
   fused.AddYawRate(0, 100);                     // out of order: ignored
   fused.AddYawRate(2 * kStepNs, std::nan(""));  // not a number: ignored
   fused.AddYawRate(2 * kStepNs, 0.1);
   const GyroOdometryPose next = fused.AddOdometry(2 * kStepNs, {1.01, 2, 0.7});
   EXPECT_TRUE(next.heading_from_gyro);
   EXPECT_NEAR(next.T_odom_base.theta_rad, 0.5 + 0.1 * kStepS, 1e-9);
+
+  // Without a gyro the wheels' poses pass exactly as read (logs without an IMU are unchanged).
+  GyroOdometry wheels_only;
+  for (int k = 0; k < 100; ++k) {
+    const PlanarPose wheels{0.013 * k, std::sin(0.1 * k), std::remainder(0.37 * k, 6.28)};
+    const GyroOdometryPose pose = wheels_only.AddOdometry(kStepNs * k, wheels);
+    EXPECT_EQ(pose.T_odom_base.x_m, wheels.x_m);
+    EXPECT_EQ(pose.T_odom_base.y_m, wheels.y_m);
+    EXPECT_EQ(pose.T_odom_base.theta_rad, wheels.theta_rad);
+    EXPECT_FALSE(pose.heading_from_gyro);
+  }
 
   GyroOdometryOptions bad;
   bad.max_gyro_gap_s = 0;
