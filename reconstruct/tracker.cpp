@@ -143,6 +143,7 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
     step.routine = Routine::kGlobal;
     step.matching_ratio = 1;
   } else {
+    const double dt = ToSeconds(input.stamp_ns - last_stamp_ns_);
     const PlanarPose predicted = Predict(input, &step.odometry_used);
     step.T_world_base = predicted;
     const IcpResult global =
@@ -189,8 +190,7 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
       if (step.odometry_used && input.heading_from_gyro) {
         Eigen::Matrix3d heading = Eigen::Matrix3d::Zero();
         heading(2, 2) =
-            PredictionInformation(pose_, predicted, ToSeconds(input.stamp_ns - last_stamp_ns_),
-                                  Prediction::kGyroOdometry)(2, 2);
+            PredictionInformation(pose_, predicted, dt, Prediction::kGyroOdometry)(2, 2);
         FuseWithPrediction(predicted, heading, &step);
       }
     } else if (step.odometry_used && anchor_) {
@@ -208,14 +208,9 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
       const Prediction prediction = !step.odometry_used       ? Prediction::kConstantVelocity
                                     : input.heading_from_gyro ? Prediction::kGyroOdometry
                                                               : Prediction::kOdometry;
-      FuseWithPrediction(
-          predicted,
-          PredictionInformation(pose_, predicted, ToSeconds(input.stamp_ns - last_stamp_ns_),
-                                prediction),
-          &step);
+      FuseWithPrediction(predicted, PredictionInformation(pose_, predicted, dt, prediction), &step);
     }
     if (!step.odometry_used) anchor_.reset();
-    const double dt = ToSeconds(input.stamp_ns - last_stamp_ns_);
     const PlanarPose moved = Between(pose_, step.T_world_base);
     velocity_per_s_ = dt > 1e-6 ? Scale(moved, 1.0 / dt) : PlanarPose{};
     path_length_m_ += std::hypot(moved.x_m, moved.y_m);
