@@ -9,6 +9,7 @@
 
 #include "capture/byte_stream.hpp"
 #include "capture/message_header.hpp"
+#include "capture/output_guard.hpp"
 #include "capture/topics.hpp"
 #include "core/error.hpp"
 
@@ -317,9 +318,14 @@ RecordingResult Record(const std::filesystem::path& bag_path,
     }
     channels.push_back(std::make_unique<Channel>(std::move(source), shared));
   }
-  ConnectAll(channels, options);
-
+  // The bag before the sensors: a bad output path fails at once, not after a camera took its
+  // seconds to start; and a sensor that does not connect leaves no empty bag behind (the writer
+  // is closed before the guard removes it).
+  OutputGuard guard;
+  guard.Add(bag_path);
   BagWriter writer(bag_path, options.bag);
+  ConnectAll(channels, options);
+  guard.Commit();
   RecordingResult result;
   const Clock::time_point start = Clock::now();
   try {

@@ -7,6 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <thread>
 
@@ -31,11 +34,12 @@ using namespace std::chrono_literals;
 // Odometry readings at a fixed rate; scripted failures.
 struct FakeScript {
   double rate_hz = 100;
-  int burst = 0;              // readings delivered at once before the steady rate
-  int disconnect_after = -1;  // Read throws SensorDisconnectedError once after this many
-  int silent_after = -1;      // then stays silent (nothing) until reconnected
-  int malformed_every = 0;    // every Nth Read throws BadInputError
-  int refuse_connects = 0;    // Connect fails this many times (after the first success)
+  int burst = 0;                 // readings delivered at once before the steady rate
+  int disconnect_after = -1;     // Read throws SensorDisconnectedError once after this many
+  int silent_after = -1;         // then stays silent (nothing) until reconnected
+  int malformed_every = 0;       // every Nth Read throws BadInputError
+  int refuse_connects = 0;       // Connect fails this many times (after the first success)
+  int* connect_calls = nullptr;  // counts every Connect, if set
 };
 
 class FakeSource : public SensorSource {
@@ -46,6 +50,7 @@ class FakeSource : public SensorSource {
   SensorKind kind() const override { return SensorKind::kOdometry; }
   const std::string& uri() const override { return uri_; }
   void Connect() override {
+    if (script_.connect_calls != nullptr) ++*script_.connect_calls;
     if (connects_ > 0 && refused_ < script_.refuse_connects) {
       ++refused_;
       throw SensorDisconnectedError(uri_ + ": still unplugged");
@@ -259,6 +264,27 @@ TEST(Recorder, ASensorThatNeverConnectsFailsAtTheStartLeavingNothing) {
         << error.what();
   }
   EXPECT_FALSE(std::filesystem::exists(dir / "bag"));
+}
+
+TEST(Recorder, ABadOutputPathFailsBeforeAnySensorIsWoken) {
+  testing::TempDir dir;
+  const std::filesystem::path taken = dir / "taken";
+  std::filesystem::create_directory(taken);
+  std::ofstream(taken / "earlier_0.db3") << "an earlier run";
+  int connect_calls = 0;
+  FakeScript script;
+  script.connect_calls = &connect_calls;
+  try {
+    Record(taken, One(std::make_unique<FakeSource>(script)), {}, FastOptions(1), kNeverStop);
+    FAIL() << "recorded into an existing path";
+  } catch (const UsageError& error) {
+    EXPECT_NE(std::string(error.what()).find("taken: output bag already exists"), std::string::npos)
+        << error.what();
+  }
+  EXPECT_EQ(connect_calls, 0);
+  // What was there is left alone.
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(taken), {}), 1);
+  EXPECT_EQ(std::filesystem::file_size(taken / "earlier_0.db3"), 14u);
 }
 
 TEST(Recorder, RecordsEmulatedLaserOdometryAndOpenNi2Camera) {
