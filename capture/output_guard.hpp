@@ -1,7 +1,8 @@
 #pragma once
 // Removes the files and directories an operation created if it does not finish, so a failed
 // import leaves no half-written bag or trajectory behind that a later stage could mistake for a
-// good one. Paths that existed before are never touched.
+// good one. A path that existed before is never removed: an empty directory (a bag writer
+// accepts one) is emptied again, anything else is not touched.
 //
 //   OutputGuard guard;
 //   guard.Add(bag_path);
@@ -10,7 +11,6 @@
 
 #include <filesystem>
 #include <system_error>
-#include <utility>
 #include <vector>
 
 namespace littermap {
@@ -22,22 +22,45 @@ class OutputGuard {
   OutputGuard& operator=(const OutputGuard&) = delete;
   ~OutputGuard() {
     if (committed_) return;
-    for (const auto& [path, existed] : outputs_) {
+    for (const Output& output : outputs_) {
       std::error_code ignored;
-      if (!existed) std::filesystem::remove_all(path, ignored);
+      switch (output.before) {
+        case Before::kAbsent:
+          std::filesystem::remove_all(output.path, ignored);
+          break;
+        case Before::kEmptyDirectory:
+          for (const auto& entry : std::filesystem::directory_iterator(output.path, ignored)) {
+            std::filesystem::remove_all(entry.path(), ignored);
+          }
+          break;
+        case Before::kOther:
+          break;
+      }
     }
   }
 
   // Call before the operation creates `path`.
   void Add(const std::filesystem::path& path) {
     if (path.empty()) return;
-    std::error_code ignored;
-    outputs_.emplace_back(path, std::filesystem::exists(path, ignored));
+    std::error_code error;
+    Before before = Before::kOther;
+    if (!std::filesystem::exists(path, error)) {
+      before = Before::kAbsent;
+    } else if (std::filesystem::is_directory(path, error) &&
+               std::filesystem::is_empty(path, error) && !error) {
+      before = Before::kEmptyDirectory;
+    }
+    outputs_.push_back({path, before});
   }
   void Commit() { committed_ = true; }
 
  private:
-  std::vector<std::pair<std::filesystem::path, bool>> outputs_;
+  enum class Before { kAbsent, kEmptyDirectory, kOther };
+  struct Output {
+    std::filesystem::path path;
+    Before before = Before::kOther;
+  };
+  std::vector<Output> outputs_;
   bool committed_ = false;
 };
 

@@ -266,6 +266,20 @@ TEST(Recorder, ASensorThatNeverConnectsFailsAtTheStartLeavingNothing) {
   EXPECT_FALSE(std::filesystem::exists(dir / "bag"));
 }
 
+TEST(Recorder, ASensorThatNeverConnectsLeavesAnEmptyOutputDirectoryEmpty) {
+  testing::TempDir dir;
+  const std::filesystem::path prepared = dir / "prepared";
+  std::filesystem::create_directory(prepared);  // a bag writer accepts an empty directory
+  RecorderOptions options = FastOptions(1);
+  options.connect_timeout_s = 0.3;
+  std::vector<std::unique_ptr<SensorSource>> sources;
+  sources.push_back(std::make_unique<OdometrySource>("tcp://127.0.0.1:1"));  // nobody listens
+  EXPECT_THROW(Record(prepared, std::move(sources), {}, options, kNeverStop),
+               SensorDisconnectedError);
+  ASSERT_TRUE(std::filesystem::is_directory(prepared));
+  EXPECT_TRUE(std::filesystem::is_empty(prepared));
+}
+
 TEST(Recorder, ABadOutputPathFailsBeforeAnySensorIsWoken) {
   testing::TempDir dir;
   const std::filesystem::path taken = dir / "taken";
