@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <deque>
 #include <optional>
+#include <utility>
 
 #include "capture/bag_reader.hpp"
 #include "capture/camera_setup.hpp"
@@ -13,6 +15,7 @@
 #include "capture/rgbd_pairing.hpp"
 #include "core/error.hpp"
 #include "core/pose3.hpp"
+#include "reconstruct/odometry_history.hpp"
 
 namespace littermap::reconstruct {
 namespace {
@@ -110,17 +113,33 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
   MessageStream stream(reader);
   RgbdPairing pairing;
   GyroOdometry gyro(options.gyro);
-  std::optional<std::pair<TimestampNs, GyroOdometryPose>> odometry;
+  OdometryHistory odometry(options.max_odometry_age_s);
   std::optional<std::pair<TimestampNs, Tilt>> tilt;
+  // A scan waits for the odometry reading after it (or until odometry is overdue), so its pose
+  // is interpolated, not the last one before it.
+  std::deque<std::pair<LaserScan, std::optional<Tilt>>> waiting;
   std::uint64_t done = 0;
   const std::string task = "reconstructing " + bag.filename().string();
+  const auto track_waiting = [&](std::optional<TimestampNs> newest_scan_ns) {
+    while (!waiting.empty()) {
+      const TimestampNs stamp_ns = waiting.front().first.stamp_ns;
+      const bool overdue =
+          !newest_scan_ns || ToSeconds(*newest_scan_ns - stamp_ns) > options.max_odometry_age_s;
+      if (!odometry.Covers(stamp_ns) && !overdue) return;
+      pipeline->AddScan(waiting.front().first, odometry.At(stamp_ns), waiting.front().second);
+      waiting.pop_front();
+      odometry.DropBefore(waiting.empty() ? stamp_ns : waiting.front().first.stamp_ns);
+      if (++done % 50 == 0) ReportProgress(progress, {task, done, total});
+    }
+  };
   while (auto message = stream.Next()) {
     if (const auto* odom = std::get_if<msg::Odometry>(&message->message)) {
       const auto& pose = odom->pose.pose;
       const TimestampNs stamp_ns = StampOf(odom->header);
       const PlanarPose T_odom_base{pose.position.x, pose.position.y,
                                    YawOf(ToEigen(pose.orientation))};
-      odometry.emplace(stamp_ns, gyro.AddOdometry(stamp_ns, T_odom_base));
+      odometry.Add(stamp_ns, gyro.AddOdometry(stamp_ns, T_odom_base));
+      if (!waiting.empty()) track_waiting(waiting.back().first.stamp_ns);
       continue;
     }
     if (const auto* imu = std::get_if<msg::Imu>(&message->message)) {
@@ -137,8 +156,7 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
                                                 ? pairing.AddColour(std::move(*image))
                                                 : pairing.AddDepth(std::move(*image));
       if (frame) {  // images are read only for an RGB-D tracker
-        const TimestampNs stamp_ns = frame->stamp_ns;
-        const auto odometry_now = Recent(odometry, stamp_ns, options.max_odometry_age_s);
+        const auto odometry_now = odometry.At(frame->stamp_ns);
         rgbd->AddFrame(std::move(*frame),
                        odometry_now ? std::optional(odometry_now->T_odom_base) : std::nullopt);
       }
@@ -146,11 +164,12 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
     }
     const auto* laser = std::get_if<msg::LaserScan>(&message->message);
     if (laser == nullptr) continue;
-    const LaserScan scan = ToScan(*laser);
-    pipeline->AddScan(scan, Recent(odometry, scan.stamp_ns, options.max_odometry_age_s),
-                      Recent(tilt, scan.stamp_ns, options.max_odometry_age_s));
-    if (++done % 50 == 0) ReportProgress(progress, {task, done, total});
+    LaserScan scan = ToScan(*laser);
+    const TimestampNs stamp_ns = scan.stamp_ns;
+    waiting.emplace_back(std::move(scan), Recent(tilt, stamp_ns, options.max_odometry_age_s));
+    track_waiting(stamp_ns);
   }
+  track_waiting(std::nullopt);
   ReportProgress(progress, {task, done, total});
   pipeline->Finish();
   return Finished(stream, start, done);
