@@ -74,6 +74,8 @@ std::string QualityJson(const SlamQuality& quality, const ReconstructionResult& 
   json["scans_tracked"] = quality.scans_tracked;
   json["scans_without_echoes"] = quality.scans_without_echoes;
   json["ground_echoes_dropped"] = quality.ground_echoes;
+  json["moving_echoes_dropped"] = quality.moving_echoes;
+  json["scans_given_up_to_moving_echoes"] = quality.scans_moving_echoes;
   json["stamps_backwards"] = quality.stamps_backwards;
   json["stamps_duplicate"] = quality.stamps_duplicate;
   json["odometry_missing"] = quality.odometry_missing;

@@ -21,6 +21,7 @@ bool LoopFits(const PoseGraphEdge& edge, const std::vector<PlanarPose>& poses,
 
 void SlamOptions::Validate() const {
   points.Validate();
+  moving_echoes.Validate();
   tracker.Validate();
   loops.Validate();
   graph.Validate();
@@ -49,6 +50,7 @@ SlamPipeline::SlamPipeline(const SlamOptions& options, const PlanarPose& T_base_
       map_(options.tracker.key_frames, options.tracker.icp),
       tracker_(options.tracker, &map_, rgbd),
       loop_closer_(options.loops),
+      moving_echoes_(options.moving_echoes),
       grid_(options.grid) {}
 
 void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdometryPose>& odometry,
@@ -72,8 +74,21 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdomet
   input.T_odom_base = T_odom_base;
   input.heading_from_gyro = odometry && odometry->heading_from_gyro;
   input.tilt = tilt;
+  Points2 map_points_base = std::move(points.points_base);
   if (points.valid_beams >= options_.min_scan_points) {
-    input.points_base = VoxelDownsample(points.points_base, options_.scan_voxel_size_m);
+    input.points_base = VoxelDownsample(map_points_base, options_.scan_voxel_size_m);
+    // Wheels alone can slip by degrees in a quarter of a second: only a gyro's heading will do.
+    if (options_.moving_echoes.enabled && tilt && odometry && odometry->heading_from_gyro) {
+      MovingEchoResult still =
+          moving_echoes_.Filter(scan.stamp_ns, odometry->T_odom_base, std::move(input.points_base));
+      quality_.moving_echoes += still.moving;
+      map_points_base = still.points_base;  // the map does not draw the arcs either
+      if (still.given_up) {
+        ++quality_.scans_moving_echoes;  // tracked like a scan without echoes
+      } else {
+        input.points_base = std::move(still.points_base);
+      }
+    }
   } else {
     ++quality_.scans_without_echoes;  // tracked on the prediction alone
   }
@@ -98,7 +113,7 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdomet
     record.z_m = scans_.back().z_m;
   }
   scans_.push_back(record);
-  StoreMapPoints(points.points_base);
+  StoreMapPoints(map_points_base);
   if (step.new_key_frame && step.key_frame > 0) {
     AddGraphEdge(step);
     if (options_.loop_closure) CloseLoops(step.key_frame);

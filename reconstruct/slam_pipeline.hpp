@@ -16,6 +16,7 @@
 #include "core/time.hpp"
 #include "reconstruct/gyro_odometry.hpp"
 #include "reconstruct/loop_closer.hpp"
+#include "reconstruct/moving_echo_filter.hpp"
 #include "reconstruct/occupancy_grid.hpp"
 #include "reconstruct/pose_graph.hpp"
 #include "reconstruct/scan_points.hpp"
@@ -25,8 +26,9 @@ namespace littermap::reconstruct {
 
 struct SlamOptions {
   ScanPointsOptions points;
-  double scan_voxel_size_m = 0.05;   // downsampling for matching
-  std::size_t min_scan_points = 20;  // fewer valid echoes: the scan is not matched
+  double scan_voxel_size_m = 0.05;        // downsampling for matching
+  MovingEchoFilterOptions moving_echoes;  // used with an IMU: the base's tilt and a gyro
+  std::size_t min_scan_points = 20;       // fewer valid echoes: the scan is not matched
   TrackerOptions tracker;
   LoopCloserOptions loops;
   PoseGraphOptions graph;
@@ -66,6 +68,8 @@ struct SlamQuality {
   std::size_t scans_tracked = 0;
   std::size_t scans_without_echoes = 0;         // too few valid ranges (all max-range / NaN)
   std::size_t ground_echoes = 0;                // dropped as ground hits of a tilted scanner
+  std::size_t moving_echoes = 0;                // dropped as moving with the robot
+  std::size_t scans_moving_echoes = 0;          // given up: mostly moving echoes
   std::size_t stamps_backwards = 0;             // dropped
   std::size_t stamps_duplicate = 0;             // dropped
   std::size_t odometry_missing = 0;             // constant-velocity prediction used
@@ -112,6 +116,7 @@ class SlamPipeline {
   KeyFrameMap map_;
   Tracker tracker_;
   LoopCloser loop_closer_;
+  MovingEchoFilter moving_echoes_;
   OccupancyGrid grid_;
   std::vector<PoseGraphEdge> edges_;
   std::vector<std::size_t> unchecked_loops_;  // indices into edges_ since the last optimisation

@@ -1,0 +1,66 @@
+#include "reconstruct/moving_echo_filter.hpp"
+
+#include <utility>
+
+#include "core/error.hpp"
+
+namespace littermap::reconstruct {
+
+void MovingEchoFilterOptions::Validate() const {
+  if (!(min_interval_s > 0) || !(static_tolerance_m > 0) || !(static_tolerance_per_m >= 0) ||
+      !(max_shift_m > static_tolerance_m)) {
+    throw UsageError(
+        "moving echoes: need min_interval_s > 0, static_tolerance_m > 0, "
+        "static_tolerance_per_m >= 0 and max_shift_m > static_tolerance_m");
+  }
+  if (!(max_moving_fraction > 0 && max_moving_fraction <= 1)) {
+    throw UsageError("moving echoes: max_moving_fraction must be in (0, 1]");
+  }
+}
+
+MovingEchoFilter::MovingEchoFilter(const MovingEchoFilterOptions& options) : options_(options) {
+  options_.Validate();
+}
+
+MovingEchoResult MovingEchoFilter::Filter(TimestampNs stamp_ns, const PlanarPose& T_odom_base,
+                                          Points2 points_base) {
+  // The newest scan at least min_interval_s older; older ones are no longer needed.
+  while (earlier_.size() >= 2 &&
+         ToSeconds(stamp_ns - earlier_[1].stamp_ns) >= options_.min_interval_s) {
+    earlier_.pop_front();
+  }
+  const Earlier* reference = !earlier_.empty() && ToSeconds(stamp_ns - earlier_.front().stamp_ns) >=
+                                                      options_.min_interval_s
+                                 ? &earlier_.front()
+                                 : nullptr;
+  MovingEchoResult result;
+  if (reference == nullptr) {
+    result.points_base = points_base;
+  } else {
+    const PlanarPose T_earlier_now = Between(reference->T_odom_base, T_odom_base);
+    const double max_sq = options_.max_shift_m * options_.max_shift_m;
+    result.points_base.reserve(points_base.size());
+    for (const Eigen::Vector2d& p : points_base) {
+      const double tolerance =
+          options_.static_tolerance_m + options_.static_tolerance_per_m * p.norm();
+      std::size_t index = 0;
+      double distance_sq = 0;
+      if (reference->echoes->Nearest(Transform(T_earlier_now, p), &index, &distance_sq) &&
+          distance_sq > tolerance * tolerance && distance_sq < max_sq) {
+        ++result.moving;
+        continue;
+      }
+      result.points_base.push_back(p);
+    }
+    if (!points_base.empty() &&
+        static_cast<double>(result.moving) >
+            options_.max_moving_fraction * static_cast<double>(points_base.size())) {
+      result.given_up = true;
+    }
+  }
+  earlier_.push_back({stamp_ns, T_odom_base,
+                      std::make_shared<const IcpTarget>(std::move(points_base), Points2{})});
+  return result;
+}
+
+}  // namespace littermap::reconstruct

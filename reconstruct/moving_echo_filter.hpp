@@ -1,0 +1,61 @@
+#pragma once
+// Echoes that move with the robot are not the world. Where a hill rises ahead, or the robot
+// pitches in a dip, the scan plane cuts the ground along a long arc that follows the robot: ICP
+// locks onto it, and the pose sticks or turns with it. The tilt alone cannot predict these arcs
+// (ScanToPoints drops only the ground under a tilted scanner), but the odometry can expose them:
+// brought into an earlier scan's frame by the odometry between the two, a static echo lands on the
+// earlier scan's echoes, a moving arc lands a little beside them. Those are dropped; a scan that
+// is mostly such echoes is given up (the laser hits the ground: thesis 2.5), so the tracker falls
+// back on its other routines. Over a quarter of a second wheels turned by a gyro are far more
+// precise than the shifts looked for; wheels alone can slip by degrees, so without a gyro (and
+// without a tilt: indoors, CARMEN logs) the filter is not used.
+
+#include <cstddef>
+#include <deque>
+#include <memory>
+
+#include "core/planar_pose.hpp"
+#include "core/time.hpp"
+#include "reconstruct/icp_matcher.hpp"
+#include "reconstruct/scan_points.hpp"
+
+namespace littermap::reconstruct {
+
+struct MovingEchoFilterOptions {
+  bool enabled = true;
+  double min_interval_s = 0.25;  // the earlier scan compared with is at least this much older
+  // A static echo lies within this distance of the earlier scan's (noise, beam spacing at range).
+  double static_tolerance_m = 0.06;
+  double static_tolerance_per_m = 0.004;
+  // Further than this from every earlier echo, an echo is new to the view, not moved.
+  double max_shift_m = 0.6;
+  // A scan with a larger share of moving echoes is given up.
+  double max_moving_fraction = 0.5;
+  void Validate() const;
+};
+
+struct MovingEchoResult {
+  Points2 points_base;     // the static echoes
+  std::size_t moving = 0;  // echoes dropped as moving with the robot
+  bool given_up = false;   // too many moving echoes: do not match this scan
+};
+
+class MovingEchoFilter {
+ public:
+  explicit MovingEchoFilter(const MovingEchoFilterOptions& options);
+
+  // points_base: the scan's (downsampled) echoes; T_odom_base: the odometry at its stamp.
+  // Scans must come in time order; the first ones, with no scan min_interval_s older, pass.
+  MovingEchoResult Filter(TimestampNs stamp_ns, const PlanarPose& T_odom_base, Points2 points_base);
+
+ private:
+  struct Earlier {
+    TimestampNs stamp_ns = 0;
+    PlanarPose T_odom_base;
+    std::shared_ptr<const IcpTarget> echoes;  // KD-tree over the scan's points
+  };
+  MovingEchoFilterOptions options_;
+  std::deque<Earlier> earlier_;
+};
+
+}  // namespace littermap::reconstruct
