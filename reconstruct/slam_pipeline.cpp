@@ -82,12 +82,9 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdomet
       MovingEchoResult still =
           moving_echoes_.Filter(scan.stamp_ns, odometry->T_odom_base, std::move(input.points_base));
       quality_.moving_echoes += still.moving;
-      map_points_base = still.points_base;  // the map does not draw the arcs either
-      if (still.given_up) {
-        ++quality_.scans_moving_echoes;  // tracked like a scan without echoes
-      } else {
-        input.points_base = std::move(still.points_base);
-      }
+      if (still.given_up) ++quality_.scans_moving_echoes;  // tracked like a scan without echoes
+      input.points_base = still.given_up ? Points2{} : still.points_base;
+      map_points_base = std::move(still.points_base);  // the map does not draw the arcs either
     }
   } else {
     ++quality_.scans_without_echoes;  // tracked on the prediction alone
