@@ -4,67 +4,18 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <numbers>
 #include <optional>
 #include <queue>
 #include <string>
 #include <utility>
 
 #include <ceres/ceres.h>
-#include <Eigen/Cholesky>
 #include <Eigen/LU>
 
 #include "core/error.hpp"
+#include "reconstruct/relative_pose_error.hpp"
 
 namespace littermap::reconstruct {
-namespace {
-
-template <typename T>
-T NormalizeAngle(const T& angle) {
-  // Into [-pi, pi), differentiable almost everywhere (as ceres/examples/slam/pose_graph_2d).
-  const T two_pi(2.0 * std::numbers::pi);
-  return angle - two_pi * ceres::floor((angle + T(std::numbers::pi)) / two_pi);
-}
-
-// Residual of a relative pose measurement T_ab between poses a = (x, y, theta) and b:
-//   r = S * [ R(theta_a)^T (t_b - t_a) - t_ab ;  normalize(theta_b - theta_a - theta_ab) ]
-// with S the upper Cholesky factor of the information (S^T S = I), so ||r||^2 = e^T I e.
-class RelativePoseError {
- public:
-  RelativePoseError(const PlanarPose& T_ab, const Eigen::Matrix3d& sqrt_information)
-      : T_ab_(T_ab), sqrt_information_(sqrt_information) {}
-
-  template <typename T>
-  bool operator()(const T* const a, const T* const b, T* residual) const {
-    const T c = ceres::cos(a[2]), s = ceres::sin(a[2]);
-    const T dx = b[0] - a[0], dy = b[1] - a[1];
-    Eigen::Matrix<T, 3, 1> e;
-    e(0) = c * dx + s * dy - T(T_ab_.x_m);
-    e(1) = -s * dx + c * dy - T(T_ab_.y_m);
-    e(2) = NormalizeAngle(b[2] - a[2] - T(T_ab_.theta_rad));
-    Eigen::Map<Eigen::Matrix<T, 3, 1>> r(residual);
-    r = sqrt_information_.cast<T>() * e;
-    return true;
-  }
-
-  static ceres::CostFunction* Create(const PlanarPose& T_ab, const Eigen::Matrix3d& information) {
-    return new ceres::AutoDiffCostFunction<RelativePoseError, 3, 3, 3>(
-        new RelativePoseError(T_ab, SqrtInformation(information)));
-  }
-
-  static Eigen::Matrix3d SqrtInformation(const Eigen::Matrix3d& information) {
-    // A tiny ridge keeps a rank-deficient estimate (a corridor) positive definite.
-    const Eigen::Matrix3d symmetric =
-        0.5 * (information + information.transpose()) + 1e-9 * Eigen::Matrix3d::Identity();
-    return symmetric.llt().matrixU();
-  }
-
- private:
-  PlanarPose T_ab_;
-  Eigen::Matrix3d sqrt_information_;
-};
-
-}  // namespace
 
 void PoseGraphOptions::Validate() const {
   if (!(loop_loss_scale > 0)) throw UsageError("pose graph: loop_loss_scale must be > 0");
