@@ -115,21 +115,20 @@ PlanarPose Tracker::Predict(const TrackInput& input, bool* odometry_used) {
   return Compose(pose_, *increment);
 }
 
-Eigen::Matrix3d Tracker::PredictionInformation(const PlanarPose& from, const PlanarPose& to,
-                                               double elapsed_s, Prediction prediction) const {
-  const PlanarPose motion = Between(from, to);
+Eigen::Matrix3d PredictionInformation(const TrackerOptions& options, const PlanarPose& motion,
+                                      double elapsed_s, Prediction prediction) {
   const double distance_m = std::hypot(motion.x_m, motion.y_m);
   const double turn_rad = std::abs(motion.theta_rad);
   const double factor =
-      prediction == Prediction::kConstantVelocity ? options_.constant_velocity_sigma_factor : 1;
+      prediction == Prediction::kConstantVelocity ? options.constant_velocity_sigma_factor : 1;
   const double sigma_m =
-      factor * (options_.odometry_sigma_m + options_.odometry_sigma_per_m * distance_m);
+      factor * (options.odometry_sigma_m + options.odometry_sigma_per_m * distance_m);
   const double sigma_rad =
       prediction == Prediction::kGyroOdometry
-          ? options_.gyro_sigma_rad + options_.gyro_sigma_rad_per_s * std::max(elapsed_s, 0.0) +
-                options_.gyro_sigma_rad_per_rad * turn_rad
-          : factor * (options_.odometry_sigma_rad + options_.odometry_sigma_rad_per_m * distance_m +
-                      options_.odometry_sigma_rad_per_rad * turn_rad);
+          ? options.gyro_sigma_rad + options.gyro_sigma_rad_per_s * std::max(elapsed_s, 0.0) +
+                options.gyro_sigma_rad_per_rad * turn_rad
+          : factor * (options.odometry_sigma_rad + options.odometry_sigma_rad_per_m * distance_m +
+                      options.odometry_sigma_rad_per_rad * turn_rad);
   return DiagonalInformation(sigma_m, sigma_rad);
 }
 
@@ -189,8 +188,8 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
       // position. A gyro's heading is still better than the camera's.
       if (step.odometry_used && input.heading_from_gyro) {
         Eigen::Matrix3d heading = Eigen::Matrix3d::Zero();
-        heading(2, 2) =
-            PredictionInformation(pose_, predicted, dt, Prediction::kGyroOdometry)(2, 2);
+        heading(2, 2) = PredictionInformation(options_, Between(pose_, predicted), dt,
+                                              Prediction::kGyroOdometry)(2, 2);
         FuseWithPrediction(predicted, heading, &step);
       }
     } else if (step.odometry_used && anchor_) {
@@ -201,14 +200,17 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
       FuseWithPrediction(
           from_anchor,
           PredictionInformation(
-              anchor_->T_world_base, from_anchor, ToSeconds(input.stamp_ns - anchor_->stamp_ns),
+              options_, Between(anchor_->T_world_base, from_anchor),
+              ToSeconds(input.stamp_ns - anchor_->stamp_ns),
               anchor_->heading_from_gyro ? Prediction::kGyroOdometry : Prediction::kOdometry),
           &step);
     } else {
       const Prediction prediction = !step.odometry_used       ? Prediction::kConstantVelocity
                                     : input.heading_from_gyro ? Prediction::kGyroOdometry
                                                               : Prediction::kOdometry;
-      FuseWithPrediction(predicted, PredictionInformation(pose_, predicted, dt, prediction), &step);
+      FuseWithPrediction(predicted,
+                         PredictionInformation(options_, Between(pose_, predicted), dt, prediction),
+                         &step);
     }
     if (!step.odometry_used) anchor_.reset();
     const PlanarPose moved = Between(pose_, step.T_world_base);

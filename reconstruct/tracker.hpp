@@ -97,6 +97,13 @@ class RgbdFallback {
                          const KeyFrameMap& map) = 0;
 };
 
+// How a pose was predicted: odometry (its heading from the gyro or not) or constant velocity.
+enum class Prediction { kOdometry, kGyroOdometry, kConstantVelocity };
+// Information (x, y, theta) of a pose predicted `motion` away from a known one, elapsed_s later,
+// by the model of the tracker's options.
+Eigen::Matrix3d PredictionInformation(const TrackerOptions& options, const PlanarPose& motion,
+                                      double elapsed_s, Prediction prediction);
+
 class Tracker {
  public:
   Tracker(const TrackerOptions& options, KeyFrameMap* map, RgbdFallback* rgbd = nullptr);
@@ -108,11 +115,6 @@ class Tracker {
 
  private:
   PlanarPose Predict(const TrackInput& input, bool* odometry_used);
-  // How a prediction was made: odometry (its heading from the gyro or not) or constant velocity.
-  enum class Prediction { kOdometry, kGyroOdometry, kConstantVelocity };
-  // Information of a pose predicted from pose `from`, elapsed_s later.
-  Eigen::Matrix3d PredictionInformation(const PlanarPose& from, const PlanarPose& to,
-                                        double elapsed_s, Prediction prediction) const;
 
   TrackerOptions options_;
   KeyFrameMap* map_;
