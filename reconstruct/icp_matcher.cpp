@@ -27,31 +27,6 @@ using KdTree =
     nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointsAdaptor>,
                                         PointsAdaptor, 2, std::uint32_t>;
 
-// Normal of the line through a neighbourhood: the eigenvector of the smaller eigenvalue of the
-// scatter matrix, accepted only when the spread across is small against the spread along.
-Eigen::Vector2d LineNormal(const Points2& points, const std::uint32_t* indices, std::size_t n) {
-  if (n < 3) return Eigen::Vector2d::Zero();
-  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-  for (std::size_t k = 0; k < n; ++k) mean += points[indices[k]];
-  mean /= static_cast<double>(n);
-  Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
-  for (std::size_t k = 0; k < n; ++k) {
-    const Eigen::Vector2d d = points[indices[k]] - mean;
-    scatter += d * d.transpose();
-  }
-  const double a = scatter(0, 0), b = scatter(0, 1), c = scatter(1, 1);
-  const double half_trace = (a + c) / 2;
-  const double root = std::sqrt(std::max(0.0, (a - c) * (a - c) / 4 + b * b));
-  const double large = half_trace + root, small = half_trace - root;
-  if (large <= 0 || small > 0.1 * large) return Eigen::Vector2d::Zero();
-  // Eigenvector of the large eigenvalue is the line direction; the normal is perpendicular.
-  Eigen::Vector2d direction = std::abs(b) > 1e-12
-                                  ? Eigen::Vector2d(large - c, b)
-                                  : (a >= c ? Eigen::Vector2d(1, 0) : Eigen::Vector2d(0, 1));
-  direction.normalize();
-  return {-direction.y(), direction.x()};
-}
-
 struct Accumulated {
   Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
   Eigen::Vector3d g = Eigen::Vector3d::Zero();
@@ -96,6 +71,30 @@ Accumulated Accumulate(const Points2& source, const IcpTarget& target, const Pla
 
 }  // namespace
 
+Eigen::Vector2d LineNormal(const Points2& points, std::span<const std::uint32_t> indices) {
+  const std::size_t n = indices.size();
+  if (n < 3) return Eigen::Vector2d::Zero();
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (std::size_t k = 0; k < n; ++k) mean += points[indices[k]];
+  mean /= static_cast<double>(n);
+  Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Eigen::Vector2d d = points[indices[k]] - mean;
+    scatter += d * d.transpose();
+  }
+  const double a = scatter(0, 0), b = scatter(0, 1), c = scatter(1, 1);
+  const double half_trace = (a + c) / 2;
+  const double root = std::sqrt(std::max(0.0, (a - c) * (a - c) / 4 + b * b));
+  const double large = half_trace + root, small = half_trace - root;
+  if (large <= 0 || small > 0.1 * large) return Eigen::Vector2d::Zero();
+  // Eigenvector of the large eigenvalue is the line direction; the normal is perpendicular.
+  Eigen::Vector2d direction = std::abs(b) > 1e-12
+                                  ? Eigen::Vector2d(large - c, b)
+                                  : (a >= c ? Eigen::Vector2d(1, 0) : Eigen::Vector2d(0, 1));
+  direction.normalize();
+  return {-direction.y(), direction.x()};
+}
+
 struct IcpTarget::Index {
   PointsAdaptor adaptor;
   KdTree tree;
@@ -128,7 +127,7 @@ IcpTarget::IcpTarget(Points2 points, const IcpOptions& options) : points_(std::m
     // Neighbours farther than 0.5 m belong to another surface.
     std::size_t near = 0;
     while (near < found && distances[near] < 0.25) ++near;
-    normals_[i] = LineNormal(points_, indices.data(), near);
+    normals_[i] = LineNormal(points_, std::span(indices.data(), near));
   }
 }
 

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include <Eigen/Core>
@@ -71,6 +72,11 @@ class IcpTarget {
   Points2 normals_;
   std::unique_ptr<Index> index_;
 };
+
+// Unit normal of the line through points[indices]: the eigenvector of the smaller eigenvalue of
+// their scatter matrix, or zero when the spread across is more than a tenth of the spread along
+// (not a line) or there are fewer than 3 points.
+Eigen::Vector2d LineNormal(const Points2& points, std::span<const std::uint32_t> indices);
 
 // Line normals of points (zero where not line-like), from each point's neighbourhood.
 Points2 EstimateNormals(const Points2& points, const IcpOptions& options);
