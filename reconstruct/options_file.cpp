@@ -27,19 +27,33 @@ Setter SetAligners(T RgbdAlignerOptions::*field) {
   };
 }
 
+// The value a name stands for, or BadInputError naming the option and the names it takes.
+template <typename Enum>
+Enum Choice(const char* key, const std::map<std::string, Enum>& names, const YAML::Node& node) {
+  const auto found = names.find(node.as<std::string>());
+  if (found == names.end()) {
+    std::string known;
+    for (const auto& [name, value] : names) known += (known.empty() ? "" : ", ") + name;
+    throw BadInputError(std::string("option '") + key + "' must be one of " + known);
+  }
+  return found->second;
+}
+
+// A named choice.
+template <typename Enum, typename Field>
+Setter SetChoice(const char* key, std::map<std::string, Enum> names, Field field) {
+  return [key, names, field](const YAML::Node& node, ReconstructionOptions* options) {
+    field(*options) = Choice(key, names, node);
+  };
+}
+
 // A named choice, for both RGB-D aligners.
 template <typename Enum>
 Setter SetAligners(const char* key, std::map<std::string, Enum> names,
                    Enum RgbdAlignerOptions::*field) {
   return [key, names, field](const YAML::Node& node, ReconstructionOptions* options) {
-    const auto found = names.find(node.as<std::string>());
-    if (found == names.end()) {
-      std::string known;
-      for (const auto& [name, value] : names) known += (known.empty() ? "" : ", ") + name;
-      throw BadInputError(std::string("option '") + key + "' must be one of " + known);
-    }
-    options->rgbd_tracker.aligner.*field = found->second;
-    options->visual_odometry.aligner.*field = found->second;
+    options->rgbd_tracker.aligner.*field = options->visual_odometry.aligner.*field =
+                                               Choice(key, names, node);
   };
 }
 
@@ -141,6 +155,24 @@ const std::map<std::string, Setter>& Setters() {
        Set<double>([](O& o) -> double& { return o.slam.max_final_loop_chi2; })},
       {"max_loop_residual_m",
        Set<double>([](O& o) -> double& { return o.slam.max_loop_residual_m; })},
+      {"scan_alignment",
+       SetChoice<AlignmentMode>("scan_alignment",
+                                {{"auto", AlignmentMode::kAuto},
+                                 {"on", AlignmentMode::kOn},
+                                 {"off", AlignmentMode::kOff}},
+                                [](O& o) -> AlignmentMode& { return o.slam.alignment_mode; })},
+      {"alignment_pair_radius_m",
+       Set<double>([](O& o) -> double& { return o.slam.alignment.pair_radius_m; })},
+      {"alignment_normal_gap_per_m",
+       Set<double>([](O& o) -> double& { return o.slam.alignment.normals.gap_per_m; })},
+      {"alignment_point_sigma_m",
+       Set<double>([](O& o) -> double& { return o.slam.alignment.point_sigma_m; })},
+      {"alignment_revisit_pairs",
+       Set<std::size_t>([](O& o) -> std::size_t& { return o.slam.alignment.max_revisit_pairs; })},
+      {"alignment_max_correspondence_distances_m",
+       Set<std::vector<double>>([](O& o) -> std::vector<double>& {
+         return o.slam.alignment.max_correspondence_distances_m;
+       })},
       {"map_cell_size_m", Set<double>([](O& o) -> double& { return o.slam.grid.cell_size_m; })},
       {"map_max_range_m", Set<double>([](O& o) -> double& { return o.slam.map_max_range_m; })},
   };

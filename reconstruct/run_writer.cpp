@@ -96,6 +96,14 @@ std::string QualityJson(const SlamQuality& quality, const ReconstructionResult& 
   json["loop_closures_rejected_after_optimisation"] = quality.loops_rejected_after_optimisation;
   json["optimisations"] = quality.optimisations;
   json["final_cost"] = quality.final_cost;
+  if (quality.alignment.rounds > 0) {
+    json["scan_alignment"] = {{"pairs", quality.alignment.pairs},
+                              {"pairs_matched", quality.alignment.pairs_matched},
+                              {"correspondences", quality.alignment.correspondences},
+                              {"rounds", quality.alignment.rounds},
+                              {"initial_cost", quality.alignment.initial_cost},
+                              {"final_cost", quality.alignment.final_cost}};
+  }
   if (rgbd != nullptr) {
     const RgbdTrackerStats& stats = rgbd->stats();
     json["rgbd"] = {{"frames", stats.frames},

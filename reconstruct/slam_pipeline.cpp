@@ -26,6 +26,7 @@ void SlamOptions::Validate() const {
   loops.Validate();
   graph.Validate();
   grid.Validate();
+  alignment.Validate();
   // Map points are kept in centimetres in 16 bits (SlamPipeline::MapPoint).
   if (!(map_max_range_m > 0) || map_max_range_m > 300) {
     throw UsageError("slam: map_max_range_m must be in (0, 300]");
@@ -67,6 +68,7 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdomet
     return;
   }
   last_stamp_ns_ = scan.stamp_ns;
+  tilted_ = tilted_ || tilt.has_value();
   ScanPoints points = ScanToPoints(scan, T_base_laser_, options_.points, tilt);
   quality_.ground_echoes += points.ground_beams;
   TrackInput input;
@@ -103,6 +105,8 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdomet
       Between(map_.key_frames()[step.key_frame].T_world_base, step.T_world_base);
   record.T_world_base = step.T_world_base;
   record.T_odom_base = T_odom_base;
+  record.odometry_used = step.odometry_used;
+  record.heading_from_gyro = input.heading_from_gyro;
   if (odometry) {
     if (!first_odometry_z_m_) first_odometry_z_m_ = odometry->z_m;
     record.z_m = odometry->z_m - *first_odometry_z_m_;
@@ -215,6 +219,10 @@ void SlamPipeline::Optimise() {
 void SlamPipeline::Finish() {
   if (!unchecked_loops_.empty()) Optimise();
   PruneFinalLoops();
+  if (options_.alignment_mode == AlignmentMode::kOn ||
+      (options_.alignment_mode == AlignmentMode::kAuto && !tilted_)) {
+    AlignKeyFrames();
+  }
   quality_.key_frames = map_.key_frames().size();
   quality_.odometry_rejected = tracker_.odometry_rejected();
   const auto& frames = map_.key_frames();
@@ -259,6 +267,42 @@ void SlamPipeline::PruneFinalLoops() {
   quality_.optimisations += pruning.removed;
   if (pruning.usable) quality_.final_cost = pruning.final_cost;
   map_.SetPoses(poses);
+}
+
+std::vector<PoseGraphEdge> SlamPipeline::KeyFrameOdometry() const {
+  const auto& frames = map_.key_frames();
+  std::vector<PoseGraphEdge> odometry(frames.size() > 0 ? frames.size() - 1 : 0);
+  std::vector<bool> found(odometry.size(), false);
+  for (const PoseGraphEdge& edge : edges_) {
+    if (edge.loop || edge.to != edge.from + 1 || edge.to >= frames.size()) continue;
+    odometry[edge.from] = edge;
+    found[edge.from] = true;
+  }
+  for (std::size_t k = 1; k < frames.size(); ++k) {
+    const ScanRecord& a = scans_[frames[k - 1].scan_index];
+    const ScanRecord& b = scans_[frames[k].scan_index];
+    if (b.scan_index != a.scan_index + 1 || !a.T_odom_base || !b.odometry_used) continue;
+    PoseGraphEdge& edge = odometry[k - 1];
+    edge.from = k - 1;
+    edge.to = k;
+    edge.T_from_to = Between(*a.T_odom_base, *b.T_odom_base);
+    edge.information = PredictionInformation(
+        options_.tracker, edge.T_from_to, ToSeconds(b.stamp_ns - a.stamp_ns),
+        b.heading_from_gyro ? Prediction::kGyroOdometry : Prediction::kOdometry);
+    found[k - 1] = true;
+  }
+  std::vector<PoseGraphEdge> kept;
+  for (std::size_t k = 0; k < odometry.size(); ++k) {
+    if (found[k]) kept.push_back(odometry[k]);
+  }
+  return kept;
+}
+
+void SlamPipeline::AlignKeyFrames() {
+  std::vector<PlanarPose> poses = map_.Poses();
+  quality_.alignment =
+      AlignScans(map_.key_frames(), KeyFrameOdometry(), &poses, options_.alignment);
+  if (quality_.alignment.rounds > 0) map_.SetPoses(poses);
 }
 
 std::vector<std::pair<TimestampNs, PlanarPose>> SlamPipeline::KeyFramePoses() const {

@@ -19,10 +19,17 @@
 #include "reconstruct/moving_echo_filter.hpp"
 #include "reconstruct/occupancy_grid.hpp"
 #include "reconstruct/pose_graph.hpp"
+#include "reconstruct/scan_alignment.hpp"
 #include "reconstruct/scan_points.hpp"
 #include "reconstruct/tracker.hpp"
 
 namespace littermap::reconstruct {
+
+// When the final scan alignment (AlignScans) runs. kAuto: for a level scanner only, i.e. unless
+// an IMU reported the base's tilt. On uneven ground the scan plane cuts the terrain, and those
+// echoes move with the robot; the tracker's fusion with the odometry holds them off, the dense
+// alignment of key frames would not.
+enum class AlignmentMode { kAuto, kOn, kOff };
 
 struct SlamOptions {
   ScanPointsOptions points;
@@ -48,6 +55,8 @@ struct SlamOptions {
   // At the end, loops whose chi-squared in the optimised graph exceeds this are removed
   // (PruneLoops): the 95 % quantile with 3 degrees of freedom, the usual gate.
   double max_final_loop_chi2 = 7.81;
+  AlignmentMode alignment_mode = AlignmentMode::kAuto;
+  ScanAlignmentOptions alignment;
   void Validate() const;
 };
 
@@ -61,6 +70,8 @@ struct ScanRecord {
   PlanarPose T_world_base;  // final, after optimisation
   double z_m = 0;           // height above where the run started, from the odometry (GyroOdometry)
   std::optional<PlanarPose> T_odom_base;  // the odometry used (gyro-turned), for comparisons
+  bool odometry_used = false;      // the tracker predicted from the odometry since the last scan
+  bool heading_from_gyro = false;  // and that odometry's turn is a gyro's
 };
 
 struct SlamQuality {
@@ -83,6 +94,7 @@ struct SlamQuality {
   std::size_t loops_rejected_after_optimisation = 0;
   std::size_t optimisations = 0;
   double final_cost = 0;
+  ScanAlignmentResult alignment;  // the final scan alignment, if it ran
 };
 
 class SlamPipeline {
@@ -110,6 +122,13 @@ class SlamPipeline {
   void StoreMapPoints(const Points2& points_base);
   // The final check of the loops (PruneLoops), before the map is rendered.
   void PruneFinalLoops();
+  // The final scan alignment (AlignScans), after the loops are settled.
+  void AlignKeyFrames();
+  // Relative-pose edges between consecutive key frames for the scan alignment: the odometry
+  // where they are consecutive scans and the tracker took its increment (it is independent of
+  // the laser, which the alignment brings in itself); otherwise the pose graph's edge, which
+  // holds what the tracker matched in the scans between them, scans the alignment does not see.
+  std::vector<PoseGraphEdge> KeyFrameOdometry() const;
 
   SlamOptions options_;
   PlanarPose T_base_laser_;
@@ -122,6 +141,7 @@ class SlamPipeline {
   std::vector<std::size_t> unchecked_loops_;  // indices into edges_ since the last optimisation
   std::vector<ScanRecord> scans_;
   std::optional<double> first_odometry_z_m_;
+  bool tilted_ = false;  // some scan came with the base's tilt
   // Every scan's echoes for the map, one per map cell, within map_max_range_m, relative to the
   // base in whole centimetres: a 15-minute run at 40 Hz keeps 34 000 scans until the end (440 MB
   // at full resolution in double, 60 MB like this).

@@ -39,7 +39,9 @@ TEST(OptionsFile, SetsTheNamedOptions) {
                          "rgbd_rejection: ransac\n"
                          "rgbd_key_frame_distance_m: 0.4\n"
                          "rgbd_orb_fast_threshold: 9\n"
-                         "loop_closure: false\n"),
+                         "loop_closure: false\n"
+                         "scan_alignment: off\n"
+                         "alignment_point_sigma_m: 0.05\n"),
                    &options);
   EXPECT_EQ(options.slam.tracker.min_matching_ratio, 0.5);
   EXPECT_FALSE(options.rgbd);
@@ -51,6 +53,8 @@ TEST(OptionsFile, SetsTheNamedOptions) {
   EXPECT_EQ(options.rgbd_tracker.aligner.orb_fast_threshold, 9);
   EXPECT_EQ(options.visual_odometry.aligner.orb_fast_threshold, 9);
   EXPECT_FALSE(options.slam.loop_closure);
+  EXPECT_EQ(options.slam.alignment_mode, AlignmentMode::kOff);
+  EXPECT_EQ(options.slam.alignment.point_sigma_m, 0.05);
 }
 
 TEST(OptionsFile, AnEmptyFileKeepsTheDefaults) {
@@ -75,6 +79,9 @@ TEST(OptionsFile, BadKeysAndValuesNameTheFileAndKey) {
   EXPECT_NE(choice.find("options.yaml: option 'rgbd_features' must be one of akaze, orb, sift"),
             std::string::npos)
       << choice;
+  const std::string mode = ErrorOf(Write(dir, "scan_alignment: yes\n"));
+  EXPECT_NE(mode.find("option 'scan_alignment' must be one of auto, off, on"), std::string::npos)
+      << mode;
   EXPECT_NE(ErrorOf(Write(dir, "- a list\n")).find("expected a map"), std::string::npos);
 }
 

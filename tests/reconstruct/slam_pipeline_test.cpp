@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <gtest/gtest.h>
 
@@ -90,6 +91,32 @@ TEST(SlamPipeline, MapDrawsTheWallsInRangeWhereTheyAre) {
     EXPECT_FALSE(occupied(9.975, j)) << "beyond map_max_range_m, y " << (j + 0.5) * cell_m;
   }
   EXPECT_GE(near_cells, 60);  // of 90
+}
+
+// A short drive through the room, its scans with or without the base's tilt.
+SlamQuality DriveThroughTheRoom(AlignmentMode mode, const std::optional<Tilt>& tilt) {
+  SlamOptions options;
+  options.alignment_mode = mode;
+  SlamPipeline pipeline(options, {});
+  PlanarPose truth{2, 2, 0};
+  const TimestampNs step = 100'000'000;
+  for (int i = 0; i < 30; ++i) {
+    pipeline.AddScan(RoomScan(truth, (i + 1) * step), GyroOdometryPose{truth}, tilt);
+    truth = Compose(truth, {0.2, 0, 0.02});
+  }
+  pipeline.Finish();
+  return pipeline.quality();
+}
+
+TEST(SlamPipeline, ScanAlignmentRunsForALevelScannerUnlessAskedOtherwise) {
+  const Tilt level_enough{0.001, -0.002};  // an IMU was there: the ground may be uneven
+  EXPECT_EQ(DriveThroughTheRoom(AlignmentMode::kAuto, std::nullopt).alignment.rounds, 4);
+  EXPECT_EQ(DriveThroughTheRoom(AlignmentMode::kAuto, level_enough).alignment.rounds, 0);
+  EXPECT_EQ(DriveThroughTheRoom(AlignmentMode::kOn, level_enough).alignment.rounds, 4);
+  EXPECT_EQ(DriveThroughTheRoom(AlignmentMode::kOff, std::nullopt).alignment.rounds, 0);
+  const SlamQuality aligned = DriveThroughTheRoom(AlignmentMode::kAuto, std::nullopt);
+  EXPECT_TRUE(aligned.alignment.usable);
+  EXPECT_GT(aligned.alignment.pairs_matched, 0u);
 }
 
 TEST(SlamPipeline, MapRangeBeyondWhatItStoresIsAUsageError) {
