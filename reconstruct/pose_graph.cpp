@@ -13,7 +13,7 @@
 #include <Eigen/LU>
 
 #include "core/error.hpp"
-#include "reconstruct/relative_pose_error.hpp"
+#include "reconstruct/pose_problem.hpp"
 
 namespace littermap::reconstruct {
 
@@ -47,13 +47,7 @@ PoseGraphResult OptimizePoseGraph(std::vector<PlanarPose>* poses,
   if (problem.HasParameterBlock(parameters[0].data())) {
     problem.SetParameterBlockConstant(parameters[0].data());
   }
-  ceres::Solver::Options solver_options;
-  solver_options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
-  solver_options.max_num_iterations = options.max_iterations;
-  solver_options.num_threads = 1;
-  solver_options.logging_type = ceres::SILENT;
-  ceres::Solver::Summary summary;
-  ceres::Solve(solver_options, &problem, &summary);
+  const ceres::Solver::Summary summary = SolvePoseProblem(&problem, options.max_iterations);
   result.usable = summary.IsSolutionUsable();
   result.iterations = static_cast<int>(summary.iterations.size());
   result.initial_cost = summary.initial_cost;

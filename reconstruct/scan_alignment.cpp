@@ -12,7 +12,7 @@
 
 #include "core/error.hpp"
 #include "reconstruct/icp_matcher.hpp"
-#include "reconstruct/relative_pose_error.hpp"
+#include "reconstruct/pose_problem.hpp"
 #include "reconstruct/scan_normals.hpp"
 
 namespace littermap::reconstruct {
@@ -229,13 +229,8 @@ ScanAlignmentResult AlignScans(const std::vector<KeyFrame>& key_frames,
     }
     if (!problem.HasParameterBlock(parameters[0].data())) break;  // nothing ties pose 0 in
     problem.SetParameterBlockConstant(parameters[0].data());
-    ceres::Solver::Options solver_options;
-    solver_options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
-    solver_options.max_num_iterations = options.max_iterations_per_round;
-    solver_options.num_threads = 1;
-    solver_options.logging_type = ceres::SILENT;
-    ceres::Solver::Summary summary;
-    ceres::Solve(solver_options, &problem, &summary);
+    const ceres::Solver::Summary summary =
+        SolvePoseProblem(&problem, options.max_iterations_per_round);
     if (!summary.IsSolutionUsable()) {
       result.usable = false;
       return result;

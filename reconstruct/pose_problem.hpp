@@ -1,9 +1,7 @@
 #pragma once
-// The Ceres residual of a relative SE(2) pose measurement T_ab between two poses a and b, each
-// (x, y, theta) in the world frame, whitened by the measurement's information:
-//   r = S * [ R(theta_a)^T (t_b - t_a) - t_ab ;  normalize(theta_b - theta_a - theta_ab) ]
-// with S the upper Cholesky factor of the information (S^T S = I), so ||r||^2 = e^T I e.
-// Shared by the pose graph (PoseGraph) and the final scan alignment (ScanAlignment).
+// The Ceres pieces of a least-squares problem over planar poses (x, y, theta), shared by the pose
+// graph and the final scan alignment: the residual of a relative pose measurement, and the
+// solver as both run it.
 
 #include <numbers>
 
@@ -22,6 +20,9 @@ T NormalizeAngle(const T& angle) {
   return angle - two_pi * ceres::floor((angle + T(std::numbers::pi)) / two_pi);
 }
 
+// A relative SE(2) pose measurement T_ab between poses a and b, whitened by its information:
+//   r = S * [ R(theta_a)^T (t_b - t_a) - t_ab ;  normalize(theta_b - theta_a - theta_ab) ]
+// with S the upper Cholesky factor of the information (S^T S = I), so ||r||^2 = e^T I e.
 class RelativePoseError {
  public:
   RelativePoseError(const PlanarPose& T_ab, const Eigen::Matrix3d& sqrt_information)
@@ -56,5 +57,17 @@ class RelativePoseError {
   PlanarPose T_ab_;
   Eigen::Matrix3d sqrt_information_;
 };
+
+// Solves on one thread with sparse normal Cholesky, silently (libraries do not print).
+inline ceres::Solver::Summary SolvePoseProblem(ceres::Problem* problem, int max_iterations) {
+  ceres::Solver::Options options;
+  options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+  options.max_num_iterations = max_iterations;
+  options.num_threads = 1;
+  options.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, problem, &summary);
+  return summary;
+}
 
 }  // namespace littermap::reconstruct
