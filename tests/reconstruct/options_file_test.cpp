@@ -41,7 +41,7 @@ TEST(OptionsFile, SetsTheNamedOptions) {
                          "rgbd_orb_fast_threshold: 9\n"
                          "loop_closure: false\n"
                          "scan_alignment: off\n"
-                         "alignment_point_sigma_m: 0.05\n"),
+                         "alignment_point_sigma_m: 0.02\n"),
                    &options);
   EXPECT_EQ(options.slam.tracker.min_matching_ratio, 0.5);
   EXPECT_FALSE(options.rgbd);
@@ -54,7 +54,7 @@ TEST(OptionsFile, SetsTheNamedOptions) {
   EXPECT_EQ(options.visual_odometry.aligner.orb_fast_threshold, 9);
   EXPECT_FALSE(options.slam.loop_closure);
   EXPECT_EQ(options.slam.alignment_mode, AlignmentMode::kOff);
-  EXPECT_EQ(options.slam.alignment.point_sigma_m, 0.05);
+  EXPECT_EQ(options.slam.alignment.point_sigma_m, 0.02);
 }
 
 TEST(OptionsFile, AnEmptyFileKeepsTheDefaults) {

@@ -143,6 +143,9 @@ TEST(ScanAlignment, BadInputIsRefused) {
   options.point_sigma_m = 0;
   EXPECT_THROW(options.Validate(), UsageError);
   options = {};
+  options.max_correspondence_distances_m = {0.3, 0.05};  // under 3 sigmas of 3 cm
+  EXPECT_THROW(options.Validate(), UsageError);
+  options = {};
   options.max_iterations_per_round = 0;
   EXPECT_THROW(options.Validate(), UsageError);
 
