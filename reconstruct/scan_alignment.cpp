@@ -168,6 +168,12 @@ void ScanAlignmentOptions::Validate() const {
   if (max_correspondence_distances_m.empty()) {
     throw UsageError("scan alignment: max_correspondence_distances_m must not be empty");
   }
+  if (!(pair_radius_m > 0) || !(source_voxel_size_m > 0) || !(point_sigma_m > 0) ||
+      !(cauchy_scale_m > 0)) {
+    throw UsageError(
+        "scan alignment: pair_radius_m, source_voxel_size_m, point_sigma_m and cauchy_scale_m "
+        "must be > 0");
+  }
   // True pairs lie up to a few sigmas of point noise apart: a tighter threshold drops them, the
   // revisits first, and the key frames drift apart with the odometry (measured at 0.05 m on the
   // CARMEN logs: Edmonton 0.12 -> 0.7 m).
@@ -177,12 +183,6 @@ void ScanAlignmentOptions::Validate() const {
           "scan alignment: correspondence distances must be at least 3 point sigmas (" +
           std::to_string(3 * point_sigma_m) + " m)");
     }
-  }
-  if (!(pair_radius_m > 0) || !(source_voxel_size_m > 0) || !(point_sigma_m > 0) ||
-      !(cauchy_scale_m > 0)) {
-    throw UsageError(
-        "scan alignment: pair_radius_m, source_voxel_size_m, point_sigma_m and cauchy_scale_m "
-        "must be > 0");
   }
   normals.Validate();
   if (max_iterations_per_round < 1) {
@@ -198,6 +198,12 @@ ScanAlignmentResult AlignScans(const std::vector<KeyFrame>& key_frames,
   if (poses->size() != key_frames.size()) {
     throw InternalError("scan alignment: " + std::to_string(poses->size()) + " poses for " +
                         std::to_string(key_frames.size()) + " key frames");
+  }
+  for (const PoseGraphEdge& edge : odometry) {
+    if (edge.from >= poses->size() || edge.to >= poses->size()) {
+      throw InternalError("scan alignment: odometry edge " + std::to_string(edge.from) + " -> " +
+                          std::to_string(edge.to) + " names a missing pose");
+    }
   }
   ScanAlignmentResult result;
   result.usable = true;
@@ -227,10 +233,6 @@ ScanAlignmentResult AlignScans(const std::vector<KeyFrame>& key_frames,
                                parameters[pair.source].data());
     }
     for (const PoseGraphEdge& edge : odometry) {
-      if (edge.from >= poses->size() || edge.to >= poses->size()) {
-        throw InternalError("scan alignment: odometry edge " + std::to_string(edge.from) + " -> " +
-                            std::to_string(edge.to) + " names a missing pose");
-      }
       problem.AddResidualBlock(RelativePoseError::Create(edge.T_from_to, edge.information), nullptr,
                                parameters[edge.from].data(), parameters[edge.to].data());
     }
