@@ -3,6 +3,8 @@
 // littermap eval detections ITEMS.csv TRUTH.csv [--natural NATURAL.csv]
 //     [--visible VISIBLE.csv [--min-pixels N]] [--match-radius M] [--json]
 // Litter precision, recall, per-class table and confusion (eval/detection_metrics.hpp).
+// littermap eval map BAG TRAJECTORY.tum... [--cell-size M] [--max-range M] [--json]
+// How sharp a map each trajectory draws from the bag's scans (eval/map_sharpness.hpp).
 
 #include <algorithm>
 #include <cstdio>
@@ -15,8 +17,11 @@
 
 #include "capture/tum_trajectory.hpp"
 #include "cli/cli_context.hpp"
+#include "core/error.hpp"
 #include "eval/detection_metrics.hpp"
+#include "eval/map_sharpness.hpp"
 #include "eval/trajectory_metrics.hpp"
+#include "reconstruct/reconstruction.hpp"
 
 namespace littermap::cli {
 namespace {
@@ -59,6 +64,101 @@ void RunTrajectory(const TrajectoryArguments& arguments) {
               metrics.rpe_trans_mean_m, metrics.rpe_trans_rmse_m, metrics.rpe_pairs,
               arguments.options.rpe_delta_m);
   std::printf("RPE rotation       %.3f deg mean\n", metrics.rpe_rot_mean_deg);
+}
+
+struct MapArguments {
+  std::string bag;
+  std::vector<std::string> trajectories;
+  std::string scan_topic = reconstruct::ReconstructionOptions{}.scan_topic;
+  bool json = false;
+  eval::MapSharpnessOptions options;
+};
+
+void RunMap(const MapArguments& arguments, CliContext& context) {
+  arguments.options.Validate();
+  reconstruct::ReconstructionOptions bag_options;
+  bag_options.scan_topic = arguments.scan_topic;
+  std::vector<std::string> warnings;
+  const PlanarPose T_base_laser =
+      reconstruct::ReadLaserExtrinsic(arguments.bag, bag_options, &warnings);
+  for (const std::string& warning : warnings) context.Warn(warning);
+  context.Status("reading the scans of " + arguments.bag);
+  const std::vector<LaserScan> scans = reconstruct::ReadScans(arguments.bag, arguments.scan_topic);
+  std::vector<eval::MapSharpness> results;
+  for (const std::string& path : arguments.trajectories) {
+    context.Status("drawing the scans with " + path);
+    eval::MapSharpness sharpness;
+    try {
+      sharpness = eval::MeasureMapSharpness(scans, T_base_laser, Load(path), arguments.options);
+    } catch (const BadInputError& error) {
+      throw BadInputError(path + ": " + error.what());
+    }
+    if (sharpness.scans_drawn < sharpness.scans) {
+      char within[64];
+      std::snprintf(within, sizeof within, "%g s", arguments.options.max_time_difference_s);
+      context.Warn(path + ": " + std::to_string(sharpness.scans - sharpness.scans_drawn) + " of " +
+                   std::to_string(sharpness.scans) + " scans have no pose within " + within +
+                   " and are not drawn; counts of trajectories that draw different scans do "
+                   "not compare");
+    }
+    results.push_back(sharpness);
+  }
+  context.FinishProgress();
+  if (arguments.json) {
+    nlohmann::ordered_json json;
+    json["cell_size_m"] = arguments.options.cell_size_m;
+    json["max_range_m"] = arguments.options.max_range_m;
+    json["trajectories"] = nlohmann::ordered_json::array();
+    for (std::size_t i = 0; i < results.size(); ++i) {
+      json["trajectories"].push_back({{"trajectory", arguments.trajectories[i]},
+                                      {"scans", results[i].scans},
+                                      {"scans_drawn", results[i].scans_drawn},
+                                      {"echoes_drawn", results[i].echoes_drawn},
+                                      {"occupied_cells", results[i].occupied_cells}});
+    }
+    std::printf("%s\n", json.dump(2).c_str());
+    return;
+  }
+  std::printf("occupied %.0f cm cells of the echoes within %.1f m (fewer: sharper map)\n",
+              100 * arguments.options.cell_size_m, arguments.options.max_range_m);
+  std::printf("%12s %9s %12s %12s  %s\n", "cells", "vs first", "echoes", "scans", "trajectory");
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    std::printf("%12zu %8.1f%% %12zu %5zu/%-6zu  %s\n", results[i].occupied_cells,
+                100.0 * static_cast<double>(results[i].occupied_cells) /
+                    static_cast<double>(results.front().occupied_cells),
+                results[i].echoes_drawn, results[i].scans_drawn, results[i].scans,
+                arguments.trajectories[i].c_str());
+  }
+}
+
+void RegisterMapCommand(CLI::App& eval_command, CliContext& context) {
+  auto arguments = std::make_shared<MapArguments>();
+  CLI::App* map = context.AddCommand(
+      eval_command, "map",
+      "How sharp a map each trajectory draws from the bag's scans: the number of grid cells their "
+      "echoes occupy (fewer is sharper; needs no reference, so it also judges one)");
+  map->add_option("BAG", arguments->bag, "Run bag with the laser scans")
+      ->required()
+      ->check(CLI::ExistingPath);
+  map->add_option("TRAJECTORY", arguments->trajectories,
+                  "Trajectories of base_link (TUM format), e.g. RUN_DIR/trajectory.tum and a "
+                  "reference; the table compares each with the first")
+      ->required()
+      ->check(CLI::ExistingFile);
+  map->add_option("--scan-topic", arguments->scan_topic, "LaserScan topic")->capture_default_str();
+  map->add_option("--cell-size", arguments->options.cell_size_m, "Grid cell size, metres")
+      ->capture_default_str();
+  map->add_option("--max-range", arguments->options.max_range_m,
+                  "Echoes further than this are not drawn, metres")
+      ->capture_default_str();
+  map->add_option("--max-time-difference", arguments->options.max_time_difference_s,
+                  "Largest stamp difference between a scan and its pose, seconds")
+      ->capture_default_str();
+  map->add_flag("--json", arguments->json,
+                "JSON output (per trajectory: occupied_cells, echoes_drawn, scans_drawn, scans)");
+  map->callback([arguments, &context] {
+    context.run = [arguments, &context] { RunMap(*arguments, context); };
+  });
 }
 
 struct DetectionArguments {
@@ -249,6 +349,7 @@ void RegisterEvalCommands(CLI::App& app, CliContext& context) {
   trajectory->callback(
       [arguments, &context] { context.run = [arguments] { RunTrajectory(*arguments); }; });
   RegisterDetectionsCommand(*eval_command, context);
+  RegisterMapCommand(*eval_command, context);
 }
 
 }  // namespace littermap::cli

@@ -175,6 +175,20 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
   return Finished(stream, start, done);
 }
 
+std::vector<LaserScan> ReadScans(const std::filesystem::path& bag, const std::string& scan_topic) {
+  BagReader reader(bag);
+  reader.RequireTopic(scan_topic, "laser scan");
+  reader.SetTopicFilter({scan_topic});
+  MessageStream stream(reader);
+  std::vector<LaserScan> scans;
+  while (auto message = stream.Next()) {
+    if (const auto* laser = std::get_if<msg::LaserScan>(&message->message)) {
+      scans.push_back(ToScan(*laser));
+    }
+  }
+  return scans;
+}
+
 bool HasLaser(const std::filesystem::path& bag, const ReconstructionOptions& options) {
   return BagReader(bag).info().FindTopic(options.scan_topic) != nullptr;
 }

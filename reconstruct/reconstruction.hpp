@@ -50,6 +50,10 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
                                     const ReconstructionOptions& options, SlamPipeline* pipeline,
                                     const ProgressCallback& progress, RgbdTracker* rgbd = nullptr);
 
+// Every scan on the topic, in bag order. Throws BadInputError naming the bag and topic when the
+// topic is missing or a message does not decode.
+std::vector<LaserScan> ReadScans(const std::filesystem::path& bag, const std::string& scan_topic);
+
 // True if the bag has the scan topic; else only visual odometry can run on it.
 bool HasLaser(const std::filesystem::path& bag, const ReconstructionOptions& options);
 

@@ -1,0 +1,94 @@
+#include "eval/map_sharpness.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <optional>
+#include <string>
+#include <unordered_set>
+
+#include "core/error.hpp"
+#include "core/pose3.hpp"
+
+namespace littermap::eval {
+namespace {
+
+// The trajectory's pose nearest in time to stamp_ns (poses sorted by stamp), if close enough.
+std::optional<PlanarPose> PoseAt(const std::vector<StampedPose>& sorted, TimestampNs stamp_ns,
+                                 double max_time_difference_s) {
+  const auto after = std::lower_bound(
+      sorted.begin(), sorted.end(), stamp_ns,
+      [](const StampedPose& pose, TimestampNs value) { return pose.stamp_ns < value; });
+  const StampedPose* best = nullptr;
+  double best_s = std::numeric_limits<double>::infinity();
+  for (auto it : {after, after == sorted.begin() ? sorted.end() : std::prev(after)}) {
+    if (it == sorted.end()) continue;
+    const double difference_s = std::abs(ToSeconds(it->stamp_ns - stamp_ns));
+    if (difference_s < best_s) {
+      best_s = difference_s;
+      best = &*it;
+    }
+  }
+  if (best == nullptr || best_s > max_time_difference_s) return std::nullopt;
+  return PlanarPose{best->position_m.x(), best->position_m.y(), YawOf(best->orientation)};
+}
+
+}  // namespace
+
+void MapSharpnessOptions::Validate() const {
+  if (!(cell_size_m > 0) || !(max_range_m > 0) || !(max_time_difference_s >= 0)) {
+    throw UsageError(
+        "map sharpness: cell_size_m and max_range_m must be > 0, max_time_difference_s >= 0");
+  }
+}
+
+MapSharpness MeasureMapSharpness(const std::vector<LaserScan>& scans,
+                                 const PlanarPose& T_base_laser,
+                                 const std::vector<StampedPose>& trajectory,
+                                 const MapSharpnessOptions& options) {
+  options.Validate();
+  if (trajectory.empty()) throw BadInputError("map sharpness: the trajectory has no poses");
+  std::vector<StampedPose> sorted = trajectory;
+  std::stable_sort(sorted.begin(), sorted.end(),
+                   [](const StampedPose& a, const StampedPose& b) { return a.stamp_ns < b.stamp_ns; });
+
+  MapSharpness sharpness;
+  sharpness.scans = scans.size();
+  std::unordered_set<std::uint64_t> cells;
+  for (const LaserScan& scan : scans) {
+    const std::optional<PlanarPose> T_world_base =
+        PoseAt(sorted, scan.stamp_ns, options.max_time_difference_s);
+    if (!T_world_base) continue;
+    ++sharpness.scans_drawn;
+    const PlanarPose T_world_laser = Compose(*T_world_base, T_base_laser);
+    for (std::size_t beam = 0; beam < scan.ranges_m.size(); ++beam) {
+      const double range_m = scan.ranges_m[beam];
+      if (!scan.IsValid(beam) || !(range_m <= options.max_range_m)) continue;
+      const double angle_rad = T_world_laser.theta_rad + scan.AngleOf(beam);
+      const double x = std::floor((T_world_laser.x_m + range_m * std::cos(angle_rad)) /
+                                  options.cell_size_m);
+      const double y = std::floor((T_world_laser.y_m + range_m * std::sin(angle_rad)) /
+                                  options.cell_size_m);
+      // Two 32-bit cell indices in one key (±2^31 cells of 5 cm reach 100,000 km); a pose
+      // beyond that, or NaN, draws nothing.
+      constexpr double kLimit = 2147483647.0;
+      if (!(std::abs(x) < kLimit && std::abs(y) < kLimit)) continue;
+      const auto ix = static_cast<std::uint32_t>(static_cast<std::int32_t>(x));
+      const auto iy = static_cast<std::uint32_t>(static_cast<std::int32_t>(y));
+      cells.insert((static_cast<std::uint64_t>(ix) << 32) | iy);
+      ++sharpness.echoes_drawn;
+    }
+  }
+  if (sharpness.scans_drawn == 0) {
+    char within[64];
+    std::snprintf(within, sizeof within, "%g s", options.max_time_difference_s);
+    throw BadInputError(std::string("map sharpness: no scan has a trajectory pose within ") +
+                        within + "; the trajectory is not of these scans");
+  }
+  sharpness.occupied_cells = cells.size();
+  return sharpness;
+}
+
+}  // namespace littermap::eval
