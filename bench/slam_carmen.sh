@@ -3,7 +3,9 @@
 # with --odometry-noise 1, 2 and 3, reconstructed, and evaluated against the reference with
 # `littermap eval trajectory` (ATE RMSE after Horn alignment, RPE over 1 m pairs).
 # Prints one table row per log x seed: odometry ATE, littermap ATE, RPE, loops, scans/s (each
-# reconstruction pinned to one core).
+# reconstruction pinned to one core), and map_vs_ref: the 5 cm cells the scans occupy when drawn
+# with littermap's trajectory, over those with the reference's (`littermap eval map`; < 1: the
+# scans lie more consistently over each other than with the reference poses).
 #   bench/slam_carmen.sh [LITTERMAP] [WORK_DIR] [LOG_NAME...]
 # SEEDS="1 2 3" picks the odometry noise seeds, OPTIONS=FILE.yaml passes reconstruct --options.
 # A benchmark, not a test: it prints, it does not assert.
@@ -25,8 +27,8 @@ mkdir -p "$work"
 # shellcheck source=bench/common.sh
 source "$here/bench/common.sh"
 
-printf '%-16s %4s %9s %9s %9s %9s %6s %6s %8s %7s\n' log seed odom_ATE ATE RPE_tr RPE_rot \
-  loops rej scans/s time_s
+printf '%-16s %4s %9s %9s %9s %9s %6s %6s %8s %7s %10s\n' log seed odom_ATE ATE RPE_tr RPE_rot \
+  loops rej scans/s time_s map_vs_ref
 for log in "${logs[@]}"; do
   for seed in $seeds; do
     bag=$work/$log-$seed
@@ -42,11 +44,15 @@ for log in "${logs[@]}"; do
       echo "$log $seed: reconstruct failed: $(cat "$run.stderr")"; continue; }
     "$littermap" eval trajectory "$run/odometry.tum" "$ref" --json >"$run/odometry_eval.json"
     "$littermap" eval trajectory "$run/trajectory.tum" "$ref" --json >"$run/eval.json"
-    printf '%-16s %4s %9s %9s %9s %9s %6s %6s %8.0f %7.2f\n' "$log" "$seed" \
+    "$littermap" -q eval map "$bag" "$run/trajectory.tum" "$ref" --json >"$run/map_eval.json"
+    map_vs_ref=$(python3 -c 'import json,sys; t=json.load(open(sys.argv[1]))["trajectories"]
+print("%.3f" % (t[0]["occupied_cells"] / t[1]["occupied_cells"]))' "$run/map_eval.json")
+    printf '%-16s %4s %9s %9s %9s %9s %6s %6s %8.0f %7.2f %10s\n' "$log" "$seed" \
       "$(field "$run/odometry_eval.json" ate_rmse_m)" "$(field "$run/eval.json" ate_rmse_m)" \
       "$(field "$run/eval.json" rpe_trans_mean_m)" "$(field "$run/eval.json" rpe_rot_mean_deg)" \
       "$(field "$run/quality.json" loop_closures_accepted %d)" \
       "$(field "$run/quality.json" loop_closures_rejected %d)" \
-      "$(field "$run/quality.json" scans_per_s)" "$(field "$run/quality.json" run_time_s)"
+      "$(field "$run/quality.json" scans_per_s)" "$(field "$run/quality.json" run_time_s)" \
+      "$map_vs_ref"
   done
 done
