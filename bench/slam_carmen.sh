@@ -45,8 +45,7 @@ for log in "${logs[@]}"; do
     "$littermap" eval trajectory "$run/odometry.tum" "$ref" --json >"$run/odometry_eval.json"
     "$littermap" eval trajectory "$run/trajectory.tum" "$ref" --json >"$run/eval.json"
     "$littermap" -q eval map "$bag" "$run/trajectory.tum" "$ref" --json >"$run/map_eval.json"
-    map_vs_ref=$(python3 -c 'import json,sys; t=json.load(open(sys.argv[1]))["trajectories"]
-print("%.3f" % (t[0]["occupied_cells"] / t[1]["occupied_cells"]))' "$run/map_eval.json")
+    map_vs_ref=$(cells_ratio "$run/map_eval.json")
     printf '%-16s %4s %9s %9s %9s %9s %6s %6s %8.0f %7.2f %10s\n' "$log" "$seed" \
       "$(field "$run/odometry_eval.json" ate_rmse_m)" "$(field "$run/eval.json" ate_rmse_m)" \
       "$(field "$run/eval.json" rpe_trans_mean_m)" "$(field "$run/eval.json" rpe_rot_mean_deg)" \

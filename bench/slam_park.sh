@@ -2,7 +2,9 @@
 # SLAM speed and memory benchmark on the simulated parks: each world simulated once (cached in
 # WORK_DIR; park_large takes about 12 minutes), then reconstructed with the hybrid laser + RGB-D
 # tracker and with the laser alone, pinned to one core. Prints one row per world x mode: scans,
-# run time, scans/s, peak resident memory of the whole process, ATE and RPE against the truth.
+# run time, scans/s, peak resident memory of the whole process, ATE and RPE against the truth,
+# and map_vs_truth: the 5 cm cells the scans occupy when drawn with the trajectory, over those
+# with the true poses (`littermap eval map`).
 #   bench/slam_park.sh [LITTERMAP] [WORK_DIR] [WORLD...]     (WORLD: park_small, park_large, ...)
 # A benchmark, not a test: it prints, it does not assert.
 set -euo pipefail
@@ -30,8 +32,8 @@ json.dump({"wall_s": wall_s, "peak_mib": peak_kib / 1024}, open(out, "w"))
 EOF
 }
 
-printf '%-12s %-7s %7s %8s %8s %8s %8s %8s %6s\n' world mode scans time_s scans/s peak_MiB \
-  ATE_m RPE_tr_m loops
+printf '%-12s %-7s %7s %8s %8s %8s %8s %8s %6s %12s\n' world mode scans time_s scans/s peak_MiB \
+  ATE_m RPE_tr_m loops map_vs_truth
 for world in "${worlds[@]}"; do
   bag=$work/$world/bag
   truth=$work/$world/truth
@@ -50,10 +52,13 @@ for world in "${worlds[@]}"; do
       "${flags[@]}"
     "$littermap" eval trajectory "$run/trajectory.tum" "$truth/trajectory.tum" --json \
       >"$run/eval.json"
-    printf '%-12s %-7s %7s %8s %8s %8s %8s %8s %6s\n' "$world" "$mode" \
+    "$littermap" -q eval map "$bag" "$run/trajectory.tum" "$truth/trajectory.tum" --json \
+      >"$run/map_eval.json"
+    map_vs_truth=$(cells_ratio "$run/map_eval.json")
+    printf '%-12s %-7s %7s %8s %8s %8s %8s %8s %6s %12s\n' "$world" "$mode" \
       "$(field "$run/quality.json" scans %d)" "$(field "$run.time.json" wall_s %.1f)" \
       "$(field "$run/quality.json" scans_per_s %.0f)" "$(field "$run.time.json" peak_mib %.0f)" \
       "$(field "$run/eval.json" ate_rmse_m %.3f)" "$(field "$run/eval.json" rpe_trans_mean_m %.3f)" \
-      "$(field "$run/quality.json" loop_closures_accepted %d)"
+      "$(field "$run/quality.json" loop_closures_accepted %d)" "$map_vs_truth"
   done
 done
