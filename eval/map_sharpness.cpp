@@ -51,8 +51,9 @@ MapSharpness MeasureMapSharpness(const std::vector<LaserScan>& scans,
   options.Validate();
   if (trajectory.empty()) throw BadInputError("map sharpness: the trajectory has no poses");
   std::vector<StampedPose> sorted = trajectory;
-  std::stable_sort(sorted.begin(), sorted.end(),
-                   [](const StampedPose& a, const StampedPose& b) { return a.stamp_ns < b.stamp_ns; });
+  std::stable_sort(sorted.begin(), sorted.end(), [](const StampedPose& a, const StampedPose& b) {
+    return a.stamp_ns < b.stamp_ns;
+  });
 
   MapSharpness sharpness;
   sharpness.scans = scans.size();
@@ -67,10 +68,10 @@ MapSharpness MeasureMapSharpness(const std::vector<LaserScan>& scans,
       const double range_m = scan.ranges_m[beam];
       if (!scan.IsValid(beam) || !(range_m <= options.max_range_m)) continue;
       const double angle_rad = T_world_laser.theta_rad + scan.AngleOf(beam);
-      const double x = std::floor((T_world_laser.x_m + range_m * std::cos(angle_rad)) /
-                                  options.cell_size_m);
-      const double y = std::floor((T_world_laser.y_m + range_m * std::sin(angle_rad)) /
-                                  options.cell_size_m);
+      const double x =
+          std::floor((T_world_laser.x_m + range_m * std::cos(angle_rad)) / options.cell_size_m);
+      const double y =
+          std::floor((T_world_laser.y_m + range_m * std::sin(angle_rad)) / options.cell_size_m);
       // Two 32-bit cell indices in one key (±2^31 cells of 5 cm reach 100,000 km); a pose
       // beyond that, or NaN, draws nothing.
       constexpr double kLimit = 2147483647.0;

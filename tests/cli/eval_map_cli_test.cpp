@@ -30,10 +30,9 @@ TEST(EvalMapCli, LittermapDrawsTheIntelLabSharperThanItsReference) {
       RunLittermap("-q reconstruct " + Quote(dir / "bag") + " -o " + Quote(dir / "run"));
   ASSERT_EQ(run.exit_code, 0) << run.output;
 
-  const auto eval = RunLittermap("-q eval map " + Quote(dir / "bag") + " " +
-                                 Quote(dir / "run" / "trajectory.tum") + " " +
-                                 Quote(dir / "ref.tum") + " " +
-                                 Quote(dir / "run" / "odometry.tum") + " --json");
+  const auto eval = RunLittermap(
+      "-q eval map " + Quote(dir / "bag") + " " + Quote(dir / "run" / "trajectory.tum") + " " +
+      Quote(dir / "ref.tum") + " " + Quote(dir / "run" / "odometry.tum") + " --json");
   ASSERT_EQ(eval.exit_code, 0) << eval.output;
   const auto json = nlohmann::json::parse(eval.output);
   ASSERT_EQ(json["trajectories"].size(), 3u);
@@ -49,17 +48,17 @@ TEST(EvalMapCli, LittermapDrawsTheIntelLabSharperThanItsReference) {
   EXPECT_GT(odometry, 2 * reference);
 
   // The table names every trajectory and compares it with the first.
-  const auto table = RunLittermap("-q eval map " + Quote(dir / "bag") + " " +
-                                  Quote(dir / "run" / "trajectory.tum") + " " +
-                                  Quote(dir / "ref.tum"));
+  const auto table =
+      RunLittermap("-q eval map " + Quote(dir / "bag") + " " +
+                   Quote(dir / "run" / "trajectory.tum") + " " + Quote(dir / "ref.tum"));
   ASSERT_EQ(table.exit_code, 0) << table.output;
   EXPECT_NE(table.output.find("100.0%"), std::string::npos) << table.output;
   EXPECT_NE(table.output.find("ref.tum"), std::string::npos) << table.output;
 
   // A trajectory of another time places no scan: bad input, named.
   std::ofstream(dir / "other.tum") << "5.0 0 0 0 0 0 0 1\n6.0 1 0 0 0 0 0 1\n";
-  const auto other = RunLittermap("-q eval map " + Quote(dir / "bag") + " " +
-                                  Quote(dir / "other.tum"));
+  const auto other =
+      RunLittermap("-q eval map " + Quote(dir / "bag") + " " + Quote(dir / "other.tum"));
   EXPECT_EQ(other.exit_code, 2) << other.output;
   EXPECT_NE(other.output.find("other.tum"), std::string::npos) << other.output;
   // A bag without the scan topic: bad input naming the topic.

@@ -110,8 +110,7 @@ TEST(MapSharpness, TruePosesDrawTheThinnestWalls) {
   const MapSharpness noisy =
       MeasureMapSharpness(run.scans, kBaseLaser, Perturbed(run.truth, 0.02, 0.5 * kDeg));
   EXPECT_GT(noisy.occupied_cells, 3 * truth.occupied_cells / 2);
-  const MapSharpness mounted_wrong =
-      MeasureMapSharpness(run.scans, PlanarPose{0, 0, 0}, run.truth);
+  const MapSharpness mounted_wrong = MeasureMapSharpness(run.scans, PlanarPose{0, 0, 0}, run.truth);
   EXPECT_GT(mounted_wrong.occupied_cells, 3 * truth.occupied_cells / 2);
   // And the count grows with the error.
   const MapSharpness noisier =
@@ -141,8 +140,7 @@ TEST(MapSharpness, OnlyScansWithAPoseAndValidNearEchoesAreDrawn) {
   // Poses 10 ms off the scans' stamps (within the default 20 ms).
   const std::vector<StampedPose> trajectory = {Stamped(scan.stamp_ns + 10'000'000, {0, 0, 0}),
                                                Stamped(scan.stamp_ns - 3'000'000'000, {0, 0, 0})};
-  const MapSharpness result =
-      MeasureMapSharpness({scan, far, unposed}, PlanarPose{}, trajectory);
+  const MapSharpness result = MeasureMapSharpness({scan, far, unposed}, PlanarPose{}, trajectory);
   EXPECT_EQ(result.scans, 3u);
   EXPECT_EQ(result.scans_drawn, 2u);
   EXPECT_EQ(result.echoes_drawn, 2u);
@@ -151,8 +149,7 @@ TEST(MapSharpness, OnlyScansWithAPoseAndValidNearEchoesAreDrawn) {
   // The same echo twice is one cell; a coarser grid merges more.
   MapSharpnessOptions coarse;
   coarse.cell_size_m = 5;
-  EXPECT_EQ(MeasureMapSharpness({scan, scan}, PlanarPose{}, trajectory, coarse).occupied_cells,
-            1u);
+  EXPECT_EQ(MeasureMapSharpness({scan, scan}, PlanarPose{}, trajectory, coarse).occupied_cells, 1u);
 }
 
 TEST(MapSharpness, RefusesWhatCannotBeMeasured) {
