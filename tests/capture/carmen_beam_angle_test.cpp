@@ -12,44 +12,49 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdint>
 #include <numbers>
-#include <unordered_set>
+#include <utility>
+#include <vector>
 
 #include "capture/carmen_laser.hpp"
 #include "capture/carmen_log.hpp"
+#include "core/laser_scan.hpp"
+#include "eval/map_sharpness.hpp"
 
 namespace littermap {
 namespace {
-
-constexpr double kCellM = 0.05;
-// Far readings are few and their endpoints are blurred more by pose error than by beam angle.
-constexpr float kMaxDrawnRangeM = 20.0f;
 
 struct Convention {
   double angle_min_rad;
   double increment_rad;
 };
 
-// Number of distinct grid cells hit by the valid scan endpoints of the log.
+// Number of distinct 5 cm cells hit by the valid scan endpoints within 20 m of the log drawn from
+// its reference poses (eval::MeasureMapSharpness; far readings are few and blurred more by pose
+// error than by beam angle). Some logs carry no time stamps, so scan i and pose i share stamp i.
 std::size_t OccupiedCells(const CarmenLog& log, const PlanarPose& T_base_laser,
                           const CarmenRangeLimits& limits, const Convention& convention) {
-  std::unordered_set<std::int64_t> cells;
+  std::vector<LaserScan> scans;
+  std::vector<eval::StampedPose> poses;
   for (const CarmenLaserRecord& record : log.scans) {
-    const PlanarPose T_world_laser = Compose(record.robot_pose, T_base_laser);
-    for (std::size_t i = 0; i < record.ranges_m.size(); ++i) {
-      const float r = record.ranges_m[i];
-      if (r < limits.range_min_m || r > limits.range_max_m || r > kMaxDrawnRangeM) continue;
-      const double angle = T_world_laser.theta_rad + convention.angle_min_rad +
-                           convention.increment_rad * static_cast<double>(i);
-      const auto cx =
-          static_cast<std::int64_t>(std::floor((T_world_laser.x_m + r * std::cos(angle)) / kCellM));
-      const auto cy =
-          static_cast<std::int64_t>(std::floor((T_world_laser.y_m + r * std::sin(angle)) / kCellM));
-      cells.insert(cx * 100'000'000 + cy);
-    }
+    LaserScan scan;
+    scan.stamp_ns = static_cast<TimestampNs>(scans.size()) * 1'000'000'000;
+    scan.angle_min_rad = convention.angle_min_rad;
+    scan.angle_increment_rad = convention.increment_rad;
+    scan.range_min_m = limits.range_min_m;
+    scan.range_max_m = limits.range_max_m;
+    scan.ranges_m = record.ranges_m;
+    eval::StampedPose pose;
+    pose.stamp_ns = scan.stamp_ns;
+    pose.position_m = {record.robot_pose.x_m, record.robot_pose.y_m, 0};
+    pose.orientation = Eigen::AngleAxisd(record.robot_pose.theta_rad, Eigen::Vector3d::UnitZ());
+    scans.push_back(std::move(scan));
+    poses.push_back(pose);
   }
-  return cells.size();
+  eval::MapSharpnessOptions options;
+  options.cell_size_m = 0.05;
+  options.max_range_m = 20;
+  return eval::MeasureMapSharpness(scans, T_base_laser, poses, options).occupied_cells;
 }
 
 class CarmenBeamAngle : public ::testing::TestWithParam<const char*> {};
