@@ -5,6 +5,8 @@
 // Litter precision, recall, per-class table and confusion (eval/detection_metrics.hpp).
 // littermap eval map BAG TRAJECTORY.tum... [--cell-size M] [--max-range M] [--json]
 // How sharp a map each trajectory draws from the bag's scans (eval/map_sharpness.hpp).
+// littermap eval settle BAG TRAJECTORY.tum [-o SETTLED.tum] [--json]
+// How far a trajectory lies from the nearest one its scans agree with (eval/scan_settling.hpp).
 
 #include <algorithm>
 #include <cstdio>
@@ -20,6 +22,7 @@
 #include "core/error.hpp"
 #include "eval/detection_metrics.hpp"
 #include "eval/map_sharpness.hpp"
+#include "eval/scan_settling.hpp"
 #include "eval/trajectory_metrics.hpp"
 #include "reconstruct/reconstruction.hpp"
 
@@ -158,6 +161,118 @@ void RegisterMapCommand(CLI::App& eval_command, CliContext& context) {
                 "JSON output (per trajectory: occupied_cells, echoes_drawn, scans_drawn, scans)");
   map->callback([arguments, &context] {
     context.run = [arguments, &context] { RunMap(*arguments, context); };
+  });
+}
+
+struct SettleArguments {
+  std::string bag;
+  std::string trajectory;
+  std::string output;
+  std::string scan_topic = reconstruct::ReconstructionOptions{}.scan_topic;
+  bool json = false;
+  eval::ScanSettlingOptions options;
+};
+
+std::vector<eval::StampedPose> ToStamped(
+    const std::vector<std::pair<TimestampNs, PlanarPose>>& poses) {
+  std::vector<eval::StampedPose> stamped;
+  for (const auto& [stamp_ns, pose] : poses) {
+    const TumPose tum = TumPoseFromPlanar(stamp_ns, pose);
+    stamped.push_back({tum.stamp_ns, tum.position_m, tum.orientation});
+  }
+  return stamped;
+}
+
+void RunSettle(const SettleArguments& arguments, CliContext& context) {
+  arguments.options.Validate();
+  reconstruct::ReconstructionOptions bag_options;
+  bag_options.scan_topic = arguments.scan_topic;
+  std::vector<std::string> warnings;
+  const PlanarPose T_base_laser =
+      reconstruct::ReadLaserExtrinsic(arguments.bag, bag_options, &warnings);
+  for (const std::string& warning : warnings) context.Warn(warning);
+  context.Status("reading the scans of " + arguments.bag);
+  const std::vector<LaserScan> scans = reconstruct::ReadScans(arguments.bag, arguments.scan_topic);
+  context.Status("aligning the scans from the poses of " + arguments.trajectory);
+  eval::ScanSettling settling;
+  try {
+    settling =
+        eval::SettleOnScans(scans, T_base_laser, Load(arguments.trajectory), arguments.options);
+  } catch (const BadInputError& error) {
+    throw BadInputError(arguments.trajectory + ": " + error.what());
+  }
+  context.FinishProgress();
+  if (!settling.alignment.usable) {
+    context.Warn("the scan alignment stopped early (" + std::to_string(settling.alignment.rounds) +
+                 " usable rounds); the settled poses are those of its last usable round");
+  }
+  if (settling.scans_placed < settling.scans) {
+    context.Warn(std::to_string(settling.scans - settling.scans_placed) + " of " +
+                 std::to_string(settling.scans) +
+                 " scans have no pose close enough in time or too few echoes, and are left out");
+  }
+  if (!arguments.output.empty()) {
+    std::vector<TumPose> settled;
+    for (const auto& [stamp_ns, pose] : settling.settled) {
+      settled.push_back(TumPoseFromPlanar(stamp_ns, pose));
+    }
+    WriteTumTrajectory(arguments.output, settled);
+  }
+  const eval::TrajectoryMetrics moved =
+      eval::EvaluateTrajectory(ToStamped(settling.given), ToStamped(settling.settled), {});
+  if (arguments.json) {
+    nlohmann::ordered_json json;
+    json["scans"] = settling.scans;
+    json["scans_placed"] = settling.scans_placed;
+    json["scans_aligned"] = settling.settled.size();
+    json["scan_pairs"] = settling.alignment.pairs_matched;
+    json["point_pairs"] = settling.alignment.correspondences;
+    json["usable"] = settling.alignment.usable;
+    json["ate_rmse_m"] = moved.ate_rmse_m;
+    json["ate_max_m"] = moved.ate_max_m;
+    json["rpe_trans_mean_m"] = moved.rpe_trans_mean_m;
+    json["rpe_rot_mean_deg"] = moved.rpe_rot_mean_deg;
+    std::printf("%s\n", json.dump(2).c_str());
+    return;
+  }
+  std::printf("scans aligned      %zu of %zu (one per %.2f m or %.0f deg of motion)\n",
+              settling.settled.size(), settling.scans, arguments.options.frame_spacing_m,
+              arguments.options.frame_spacing_rad * 180 / 3.14159265358979);
+  std::printf("pairs              %zu scan pairs, %zu point pairs\n",
+              settling.alignment.pairs_matched, settling.alignment.correspondences);
+  std::printf("moved to agree with its scans:\n");
+  std::printf("ATE RMSE           %.4f m (max %.4f m)\n", moved.ate_rmse_m, moved.ate_max_m);
+  std::printf("RPE translation    %.4f m mean over %zu pairs 1 m apart\n", moved.rpe_trans_mean_m,
+              moved.rpe_pairs);
+  std::printf("RPE rotation       %.3f deg mean\n", moved.rpe_rot_mean_deg);
+}
+
+void RegisterSettleCommand(CLI::App& eval_command, CliContext& context) {
+  auto arguments = std::make_shared<SettleArguments>();
+  CLI::App* settle = context.AddCommand(
+      eval_command, "settle",
+      "How far a trajectory lies from the nearest one its own scans agree with: the scans are "
+      "aligned against each other from its poses (reconstruct's final scan alignment), and the "
+      "move is reported as ATE and RPE (needs no reference, so it also judges one)");
+  settle->add_option("BAG", arguments->bag, "Run bag with the laser scans")
+      ->required()
+      ->check(CLI::ExistingPath);
+  settle->add_option("TRAJECTORY", arguments->trajectory, "Trajectory of base_link (TUM format)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  settle->add_option("-o,--output", arguments->output,
+                     "Write the settled trajectory (TUM format) of the scans aligned");
+  settle->add_option("--scan-topic", arguments->scan_topic, "LaserScan topic")
+      ->capture_default_str();
+  settle
+      ->add_option("--max-time-difference", arguments->options.max_time_difference_s,
+                   "Largest stamp difference between a scan and its pose, seconds")
+      ->capture_default_str();
+  settle->add_flag("--json", arguments->json,
+                   "JSON output (ate_rmse_m, rpe_trans_mean_m, rpe_rot_mean_deg of the move, "
+                   "scans_aligned, ...)");
+  settle->callback([arguments, &context] {
+    context.run = [arguments, &context] { RunSettle(*arguments, context); };
   });
 }
 
@@ -350,6 +465,7 @@ void RegisterEvalCommands(CLI::App& app, CliContext& context) {
       [arguments, &context] { context.run = [arguments] { RunTrajectory(*arguments); }; });
   RegisterDetectionsCommand(*eval_command, context);
   RegisterMapCommand(*eval_command, context);
+  RegisterSettleCommand(*eval_command, context);
 }
 
 }  // namespace littermap::cli

@@ -4,38 +4,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <limits>
 #include <optional>
 #include <string>
 #include <unordered_set>
 
 #include "core/error.hpp"
-#include "core/pose3.hpp"
 
 namespace littermap::eval {
-namespace {
-
-// The trajectory's pose nearest in time to stamp_ns (poses sorted by stamp), if close enough.
-std::optional<PlanarPose> PoseAt(const std::vector<StampedPose>& sorted, TimestampNs stamp_ns,
-                                 double max_time_difference_s) {
-  const auto after = std::lower_bound(
-      sorted.begin(), sorted.end(), stamp_ns,
-      [](const StampedPose& pose, TimestampNs value) { return pose.stamp_ns < value; });
-  const StampedPose* best = nullptr;
-  double best_s = std::numeric_limits<double>::infinity();
-  for (auto it : {after, after == sorted.begin() ? sorted.end() : std::prev(after)}) {
-    if (it == sorted.end()) continue;
-    const double difference_s = std::abs(ToSeconds(it->stamp_ns - stamp_ns));
-    if (difference_s < best_s) {
-      best_s = difference_s;
-      best = &*it;
-    }
-  }
-  if (best == nullptr || best_s > max_time_difference_s) return std::nullopt;
-  return PlanarPose{best->position_m.x(), best->position_m.y(), YawOf(best->orientation)};
-}
-
-}  // namespace
 
 void MapSharpnessOptions::Validate() const {
   if (!(cell_size_m > 0) || !(max_range_m > 0) || !(max_time_difference_s >= 0)) {
@@ -60,7 +35,7 @@ MapSharpness MeasureMapSharpness(const std::vector<LaserScan>& scans,
   std::unordered_set<std::uint64_t> cells;
   for (const LaserScan& scan : scans) {
     const std::optional<PlanarPose> T_world_base =
-        PoseAt(sorted, scan.stamp_ns, options.max_time_difference_s);
+        PlanarPoseNearest(sorted, scan.stamp_ns, options.max_time_difference_s);
     if (!T_world_base) continue;
     ++sharpness.scans_drawn;
     const PlanarPose T_world_laser = Compose(*T_world_base, T_base_laser);

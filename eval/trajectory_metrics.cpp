@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <tuple>
@@ -9,6 +11,7 @@
 #include <Eigen/Geometry>
 
 #include "core/error.hpp"
+#include "core/pose3.hpp"
 
 namespace littermap::eval {
 namespace {
@@ -149,6 +152,25 @@ TrajectoryMetrics EvaluateTrajectory(const std::vector<StampedPose>& estimate,
     metrics.rpe_rot_mean_deg = rot_sum / pairs * 180.0 / std::numbers::pi;
   }
   return metrics;
+}
+
+std::optional<PlanarPose> PlanarPoseNearest(const std::vector<StampedPose>& sorted,
+                                            TimestampNs stamp_ns, double max_time_difference_s) {
+  const auto after = std::lower_bound(
+      sorted.begin(), sorted.end(), stamp_ns,
+      [](const StampedPose& pose, TimestampNs value) { return pose.stamp_ns < value; });
+  const StampedPose* best = nullptr;
+  double best_s = std::numeric_limits<double>::infinity();
+  for (auto it : {after, after == sorted.begin() ? sorted.end() : std::prev(after)}) {
+    if (it == sorted.end()) continue;
+    const double difference_s = std::abs(ToSeconds(it->stamp_ns - stamp_ns));
+    if (difference_s < best_s) {
+      best_s = difference_s;
+      best = &*it;
+    }
+  }
+  if (best == nullptr || best_s > max_time_difference_s) return std::nullopt;
+  return PlanarPose{best->position_m.x(), best->position_m.y(), YawOf(best->orientation)};
 }
 
 }  // namespace littermap::eval

@@ -11,11 +11,13 @@
 //   rotation angle, exactly as evaluate_rpe.py composes it. Pairs are chosen by distance along the
 //   estimate, as evaluate_rpe.py and evo (by default) do, not along the reference.
 
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "core/planar_pose.hpp"
 #include "core/time.hpp"
 
 namespace littermap::eval {
@@ -48,6 +50,11 @@ struct TrajectoryMetrics {
 std::vector<std::pair<std::size_t, std::size_t>> AssociateByTime(
     const std::vector<StampedPose>& estimate, const std::vector<StampedPose>& reference,
     double max_time_difference_s);
+
+// The pose of a trajectory sorted by stamp nearest in time to stamp_ns, as a planar pose (the yaw
+// of its orientation), if it is at most max_time_difference_s away.
+std::optional<PlanarPose> PlanarPoseNearest(const std::vector<StampedPose>& sorted,
+                                            TimestampNs stamp_ns, double max_time_difference_s);
 
 // Throws BadInputError if fewer than 2 poses associate (or fewer than 3 for the alignment).
 TrajectoryMetrics EvaluateTrajectory(const std::vector<StampedPose>& estimate,
