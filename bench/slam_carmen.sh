@@ -5,7 +5,10 @@
 # Prints one table row per log x seed: odometry ATE, littermap ATE, RPE, loops, scans/s (each
 # reconstruction pinned to one core), and map_vs_ref: the 5 cm cells the scans occupy when drawn
 # with littermap's trajectory, over those with the reference's (`littermap eval map`; < 1: the
-# scans lie more consistently over each other than with the reference poses).
+# scans lie more consistently over each other than with the reference poses); ref_moves and
+# est_moves: how far (ATE RMSE, metres) the reference and littermap's trajectory move when settled
+# onto their scans (`littermap eval settle`): the reference's move is the part of the ATE the scans
+# themselves dispute.
 #   bench/slam_carmen.sh [LITTERMAP] [WORK_DIR] [LOG_NAME...]
 # SEEDS="1 2 3" picks the odometry noise seeds, OPTIONS=FILE.yaml passes reconstruct --options.
 # A benchmark, not a test: it prints, it does not assert.
@@ -27,8 +30,8 @@ mkdir -p "$work"
 # shellcheck source=bench/common.sh
 source "$here/bench/common.sh"
 
-printf '%-16s %4s %9s %9s %9s %9s %6s %6s %8s %7s %10s\n' log seed odom_ATE ATE RPE_tr RPE_rot \
-  loops rej scans/s time_s map_vs_ref
+printf '%-16s %4s %9s %9s %9s %9s %6s %6s %8s %7s %10s %9s %9s\n' log seed odom_ATE ATE RPE_tr \
+  RPE_rot loops rej scans/s time_s map_vs_ref ref_moves est_moves
 for log in "${logs[@]}"; do
   for seed in $seeds; do
     bag=$work/$log-$seed
@@ -46,12 +49,17 @@ for log in "${logs[@]}"; do
     "$littermap" eval trajectory "$run/trajectory.tum" "$ref" --json >"$run/eval.json"
     "$littermap" -q eval map "$bag" "$run/trajectory.tum" "$ref" --json >"$run/map_eval.json"
     map_vs_ref=$(cells_ratio "$run/map_eval.json")
-    printf '%-16s %4s %9s %9s %9s %9s %6s %6s %8.0f %7.2f %10s\n' "$log" "$seed" \
+    if [[ ! -f $work/$log-ref-settle.json ]]; then
+      "$littermap" -q eval settle "$bag" "$ref" --json >"$work/$log-ref-settle.json"
+    fi
+    "$littermap" -q eval settle "$bag" "$run/trajectory.tum" --json >"$run/settle.json"
+    printf '%-16s %4s %9s %9s %9s %9s %6s %6s %8.0f %7.2f %10s %9s %9s\n' "$log" "$seed" \
       "$(field "$run/odometry_eval.json" ate_rmse_m)" "$(field "$run/eval.json" ate_rmse_m)" \
       "$(field "$run/eval.json" rpe_trans_mean_m)" "$(field "$run/eval.json" rpe_rot_mean_deg)" \
       "$(field "$run/quality.json" loop_closures_accepted %d)" \
       "$(field "$run/quality.json" loop_closures_rejected %d)" \
       "$(field "$run/quality.json" scans_per_s)" "$(field "$run/quality.json" run_time_s)" \
-      "$map_vs_ref"
+      "$map_vs_ref" "$(field "$work/$log-ref-settle.json" ate_rmse_m)" \
+      "$(field "$run/settle.json" ate_rmse_m)"
   done
 done
