@@ -69,6 +69,24 @@ void RunTrajectory(const TrajectoryArguments& arguments) {
   std::printf("RPE rotation       %.3f deg mean\n", metrics.rpe_rot_mean_deg);
 }
 
+struct BagScans {
+  PlanarPose T_base_laser;
+  std::vector<LaserScan> scans;
+};
+
+// A bag's laser extrinsic (warnings reported) and all its scans.
+BagScans ReadBagScans(const std::string& bag, const std::string& scan_topic, CliContext& context) {
+  reconstruct::ReconstructionOptions bag_options;
+  bag_options.scan_topic = scan_topic;
+  std::vector<std::string> warnings;
+  BagScans read;
+  read.T_base_laser = reconstruct::ReadLaserExtrinsic(bag, bag_options, &warnings);
+  for (const std::string& warning : warnings) context.Warn(warning);
+  context.Status("reading the scans of " + bag);
+  read.scans = reconstruct::ReadScans(bag, scan_topic);
+  return read;
+}
+
 struct MapArguments {
   std::string bag;
   std::vector<std::string> trajectories;
@@ -79,14 +97,7 @@ struct MapArguments {
 
 void RunMap(const MapArguments& arguments, CliContext& context) {
   arguments.options.Validate();
-  reconstruct::ReconstructionOptions bag_options;
-  bag_options.scan_topic = arguments.scan_topic;
-  std::vector<std::string> warnings;
-  const PlanarPose T_base_laser =
-      reconstruct::ReadLaserExtrinsic(arguments.bag, bag_options, &warnings);
-  for (const std::string& warning : warnings) context.Warn(warning);
-  context.Status("reading the scans of " + arguments.bag);
-  const std::vector<LaserScan> scans = reconstruct::ReadScans(arguments.bag, arguments.scan_topic);
+  const auto [T_base_laser, scans] = ReadBagScans(arguments.bag, arguments.scan_topic, context);
   std::vector<eval::MapSharpness> results;
   for (const std::string& path : arguments.trajectories) {
     context.Status("drawing the scans with " + path);
@@ -185,14 +196,7 @@ std::vector<eval::StampedPose> ToStamped(
 
 void RunSettle(const SettleArguments& arguments, CliContext& context) {
   arguments.options.Validate();
-  reconstruct::ReconstructionOptions bag_options;
-  bag_options.scan_topic = arguments.scan_topic;
-  std::vector<std::string> warnings;
-  const PlanarPose T_base_laser =
-      reconstruct::ReadLaserExtrinsic(arguments.bag, bag_options, &warnings);
-  for (const std::string& warning : warnings) context.Warn(warning);
-  context.Status("reading the scans of " + arguments.bag);
-  const std::vector<LaserScan> scans = reconstruct::ReadScans(arguments.bag, arguments.scan_topic);
+  const auto [T_base_laser, scans] = ReadBagScans(arguments.bag, arguments.scan_topic, context);
   context.Status("aligning the scans from the poses of " + arguments.trajectory);
   eval::ScanSettling settling;
   try {
