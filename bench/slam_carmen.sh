@@ -7,8 +7,7 @@
 # with littermap's trajectory, over those with the reference's (`littermap eval map`; < 1: the
 # scans lie more consistently over each other than with the reference poses); ref_moves and
 # est_moves: how far (ATE RMSE, metres) the reference and littermap's trajectory move when settled
-# onto their scans (`littermap eval settle`): the reference's move is the part of the ATE the scans
-# themselves dispute.
+# onto their scans (`littermap eval settle`): how far the log's own scans move the reference.
 #   bench/slam_carmen.sh [LITTERMAP] [WORK_DIR] [LOG_NAME...]
 # SEEDS="1 2 3" picks the odometry noise seeds, OPTIONS=FILE.yaml passes reconstruct --options.
 # A benchmark, not a test: it prints, it does not assert.
@@ -32,6 +31,7 @@ source "$here/bench/common.sh"
 
 printf '%-16s %4s %9s %9s %9s %9s %6s %6s %8s %7s %10s %9s %9s\n' log seed odom_ATE ATE RPE_tr \
   RPE_rot loops rej scans/s time_s map_vs_ref ref_moves est_moves
+declare -A ref_settled
 for log in "${logs[@]}"; do
   for seed in $seeds; do
     bag=$work/$log-$seed
@@ -49,8 +49,10 @@ for log in "${logs[@]}"; do
     "$littermap" eval trajectory "$run/trajectory.tum" "$ref" --json >"$run/eval.json"
     "$littermap" -q eval map "$bag" "$run/trajectory.tum" "$ref" --json >"$run/map_eval.json"
     map_vs_ref=$(cells_ratio "$run/map_eval.json")
-    if [[ ! -f $work/$log-ref-settle.json ]]; then
-      "$littermap" -q eval settle "$bag" "$ref" --json >"$work/$log-ref-settle.json"
+    if [[ -z ${ref_settled[$log]:-} ]]; then  # once a log and run: the scans are the seeds' same
+      "$littermap" -q eval settle "$bag" "$ref" --json >"$work/$log-ref-settle.json.part"
+      mv "$work/$log-ref-settle.json.part" "$work/$log-ref-settle.json"
+      ref_settled[$log]=1
     fi
     "$littermap" -q eval settle "$bag" "$run/trajectory.tum" --json >"$run/settle.json"
     printf '%-16s %4s %9s %9s %9s %9s %6s %6s %8.0f %7.2f %10s %9s %9s\n' "$log" "$seed" \

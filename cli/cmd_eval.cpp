@@ -6,11 +6,14 @@
 // littermap eval map BAG TRAJECTORY.tum... [--cell-size M] [--max-range M] [--json]
 // How sharp a map each trajectory draws from the bag's scans (eval/map_sharpness.hpp).
 // littermap eval settle BAG TRAJECTORY.tum [-o SETTLED.tum] [--json]
-// How far a trajectory lies from the nearest one its scans agree with (eval/scan_settling.hpp).
+// How far a trajectory lies from the nearest one its scans agree with
+// (reconstruct/scan_settling.hpp).
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,9 +25,9 @@
 #include "core/error.hpp"
 #include "eval/detection_metrics.hpp"
 #include "eval/map_sharpness.hpp"
-#include "eval/scan_settling.hpp"
 #include "eval/trajectory_metrics.hpp"
 #include "reconstruct/reconstruction.hpp"
+#include "reconstruct/scan_settling.hpp"
 
 namespace littermap::cli {
 namespace {
@@ -101,9 +104,10 @@ void RunMap(const MapArguments& arguments, CliContext& context) {
   std::vector<eval::MapSharpness> results;
   for (const std::string& path : arguments.trajectories) {
     context.Status("drawing the scans with " + path);
+    const std::vector<eval::StampedPose> trajectory = Load(path);
     eval::MapSharpness sharpness;
     try {
-      sharpness = eval::MeasureMapSharpness(scans, T_base_laser, Load(path), arguments.options);
+      sharpness = eval::MeasureMapSharpness(scans, T_base_laser, trajectory, arguments.options);
     } catch (const BadInputError& error) {
       throw BadInputError(path + ": " + error.what());
     }
@@ -180,8 +184,9 @@ struct SettleArguments {
   std::string trajectory;
   std::string output;
   std::string scan_topic = reconstruct::ReconstructionOptions{}.scan_topic;
+  double max_time_difference_s = 0.02;
   bool json = false;
-  eval::ScanSettlingOptions options;
+  reconstruct::ScanSettlingOptions options;
 };
 
 std::vector<eval::StampedPose> ToStamped(
@@ -194,39 +199,64 @@ std::vector<eval::StampedPose> ToStamped(
   return stamped;
 }
 
-void RunSettle(const SettleArguments& arguments, CliContext& context) {
-  arguments.options.Validate();
+// The scans of the bag placed with the trajectory's poses and aligned; warnings for what was
+// left out.
+reconstruct::ScanSettling Settle(const SettleArguments& arguments, CliContext& context) {
   const auto [T_base_laser, scans] = ReadBagScans(arguments.bag, arguments.scan_topic, context);
+  std::vector<TimestampNs> stamps_ns;
+  for (const LaserScan& scan : scans) stamps_ns.push_back(scan.stamp_ns);
+  const std::vector<std::optional<PlanarPose>> poses =
+      eval::PlanarPosesAt(Load(arguments.trajectory), stamps_ns, arguments.max_time_difference_s);
   context.Status("aligning the scans from the poses of " + arguments.trajectory);
-  eval::ScanSettling settling;
+  reconstruct::ScanSettling settling;
   try {
-    settling =
-        eval::SettleOnScans(scans, T_base_laser, Load(arguments.trajectory), arguments.options);
+    settling = reconstruct::SettleOnScans(scans, poses, T_base_laser, arguments.options);
   } catch (const BadInputError& error) {
     throw BadInputError(arguments.trajectory + ": " + error.what());
   }
   context.FinishProgress();
+  if (settling.scans_posed < settling.scans) {
+    context.Warn(std::to_string(settling.scans - settling.scans_posed) + " of " +
+                 std::to_string(settling.scans) + " scans have no pose in " + arguments.trajectory +
+                 " close enough in time, and are left out");
+  }
+  if (settling.scans_placed < settling.scans_posed) {
+    context.Warn(std::to_string(settling.scans_posed - settling.scans_placed) + " of " +
+                 std::to_string(settling.scans) +
+                 " scans have too few valid echoes, and are left out");
+  }
   if (!settling.alignment.usable) {
     context.Warn("the scan alignment stopped early (" + std::to_string(settling.alignment.rounds) +
                  " usable rounds); the settled poses are those of its last usable round");
   }
-  if (settling.scans_placed < settling.scans) {
-    context.Warn(std::to_string(settling.scans - settling.scans_placed) + " of " +
-                 std::to_string(settling.scans) +
-                 " scans have no pose close enough in time or too few echoes, and are left out");
+  return settling;
+}
+
+void RunSettle(const SettleArguments& arguments, CliContext& context) {
+  arguments.options.Validate();
+  if (!(arguments.max_time_difference_s >= 0)) {
+    throw UsageError("--max-time-difference must be >= 0");
   }
-  if (!arguments.output.empty()) {
+  const std::filesystem::path output = arguments.output;
+  if (!output.empty() &&
+      !std::filesystem::is_directory(output.parent_path().empty() ? std::filesystem::path(".")
+                                                                  : output.parent_path())) {
+    throw UsageError(arguments.output + ": its directory does not exist");
+  }
+  const reconstruct::ScanSettling settling = Settle(arguments, context);
+  const eval::TrajectoryMetrics moved =
+      eval::EvaluateTrajectory(ToStamped(settling.given), ToStamped(settling.settled), {});
+  if (!output.empty()) {
     std::vector<TumPose> settled;
     for (const auto& [stamp_ns, pose] : settling.settled) {
       settled.push_back(TumPoseFromPlanar(stamp_ns, pose));
     }
-    WriteTumTrajectory(arguments.output, settled);
+    WriteTumTrajectory(output, settled);
   }
-  const eval::TrajectoryMetrics moved =
-      eval::EvaluateTrajectory(ToStamped(settling.given), ToStamped(settling.settled), {});
   if (arguments.json) {
     nlohmann::ordered_json json;
     json["scans"] = settling.scans;
+    json["scans_posed"] = settling.scans_posed;
     json["scans_placed"] = settling.scans_placed;
     json["scans_aligned"] = settling.settled.size();
     json["scan_pairs"] = settling.alignment.pairs_matched;
@@ -241,7 +271,7 @@ void RunSettle(const SettleArguments& arguments, CliContext& context) {
   }
   std::printf("scans aligned      %zu of %zu (one per %.2f m or %.0f deg of motion)\n",
               settling.settled.size(), settling.scans, arguments.options.frame_spacing_m,
-              arguments.options.frame_spacing_rad * 180 / 3.14159265358979);
+              arguments.options.frame_spacing_rad * 180 / std::numbers::pi);
   std::printf("pairs              %zu scan pairs, %zu point pairs\n",
               settling.alignment.pairs_matched, settling.alignment.correspondences);
   std::printf("moved to agree with its scans:\n");
@@ -265,11 +295,12 @@ void RegisterSettleCommand(CLI::App& eval_command, CliContext& context) {
       ->required()
       ->check(CLI::ExistingFile);
   settle->add_option("-o,--output", arguments->output,
-                     "Write the settled trajectory (TUM format) of the scans aligned");
+                     "Write the settled poses (TUM format) of the scans aligned (one per 0.5 m or "
+                     "17 deg of motion)");
   settle->add_option("--scan-topic", arguments->scan_topic, "LaserScan topic")
       ->capture_default_str();
   settle
-      ->add_option("--max-time-difference", arguments->options.max_time_difference_s,
+      ->add_option("--max-time-difference", arguments->max_time_difference_s,
                    "Largest stamp difference between a scan and its pose, seconds")
       ->capture_default_str();
   settle->add_flag("--json", arguments->json,

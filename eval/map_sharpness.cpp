@@ -25,17 +25,17 @@ MapSharpness MeasureMapSharpness(const std::vector<LaserScan>& scans,
                                  const MapSharpnessOptions& options) {
   options.Validate();
   if (trajectory.empty()) throw BadInputError("map sharpness: the trajectory has no poses");
-  std::vector<StampedPose> sorted = trajectory;
-  std::stable_sort(sorted.begin(), sorted.end(), [](const StampedPose& a, const StampedPose& b) {
-    return a.stamp_ns < b.stamp_ns;
-  });
+  std::vector<TimestampNs> stamps_ns;
+  for (const LaserScan& scan : scans) stamps_ns.push_back(scan.stamp_ns);
+  const std::vector<std::optional<PlanarPose>> poses =
+      PlanarPosesAt(trajectory, stamps_ns, options.max_time_difference_s);
 
   MapSharpness sharpness;
   sharpness.scans = scans.size();
   std::unordered_set<std::uint64_t> cells;
-  for (const LaserScan& scan : scans) {
-    const std::optional<PlanarPose> T_world_base =
-        PlanarPoseNearest(sorted, scan.stamp_ns, options.max_time_difference_s);
+  for (std::size_t i = 0; i < scans.size(); ++i) {
+    const LaserScan& scan = scans[i];
+    const std::optional<PlanarPose>& T_world_base = poses[i];
     if (!T_world_base) continue;
     ++sharpness.scans_drawn;
     const PlanarPose T_world_laser = Compose(*T_world_base, T_base_laser);

@@ -37,6 +37,26 @@ std::size_t ClosestIndex(const std::vector<double>& sorted, double value) {
   return (value - sorted[index - 1] <= sorted[index] - value) ? index - 1 : index;
 }
 
+// The pose of a trajectory sorted by stamp nearest in time to stamp_ns, if close enough.
+std::optional<PlanarPose> PlanarPoseNearest(const std::vector<StampedPose>& sorted,
+                                            TimestampNs stamp_ns, double max_time_difference_s) {
+  const auto after = std::lower_bound(
+      sorted.begin(), sorted.end(), stamp_ns,
+      [](const StampedPose& pose, TimestampNs value) { return pose.stamp_ns < value; });
+  const StampedPose* best = nullptr;
+  double best_s = std::numeric_limits<double>::infinity();
+  for (auto it : {after, after == sorted.begin() ? sorted.end() : std::prev(after)}) {
+    if (it == sorted.end()) continue;
+    const double difference_s = std::abs(ToSeconds(it->stamp_ns - stamp_ns));
+    if (difference_s < best_s) {
+      best_s = difference_s;
+      best = &*it;
+    }
+  }
+  if (best == nullptr || best_s > max_time_difference_s) return std::nullopt;
+  return PlanarPose{best->position_m.x(), best->position_m.y(), YawOf(best->orientation)};
+}
+
 }  // namespace
 
 void TrajectoryMetricsOptions::Validate() const {
@@ -154,23 +174,22 @@ TrajectoryMetrics EvaluateTrajectory(const std::vector<StampedPose>& estimate,
   return metrics;
 }
 
-std::optional<PlanarPose> PlanarPoseNearest(const std::vector<StampedPose>& sorted,
-                                            TimestampNs stamp_ns, double max_time_difference_s) {
-  const auto after = std::lower_bound(
-      sorted.begin(), sorted.end(), stamp_ns,
-      [](const StampedPose& pose, TimestampNs value) { return pose.stamp_ns < value; });
-  const StampedPose* best = nullptr;
-  double best_s = std::numeric_limits<double>::infinity();
-  for (auto it : {after, after == sorted.begin() ? sorted.end() : std::prev(after)}) {
-    if (it == sorted.end()) continue;
-    const double difference_s = std::abs(ToSeconds(it->stamp_ns - stamp_ns));
-    if (difference_s < best_s) {
-      best_s = difference_s;
-      best = &*it;
-    }
+std::vector<std::optional<PlanarPose>> PlanarPosesAt(const std::vector<StampedPose>& trajectory,
+                                                     const std::vector<TimestampNs>& stamps_ns,
+                                                     double max_time_difference_s) {
+  if (!(max_time_difference_s >= 0)) {
+    throw UsageError("max_time_difference_s must be >= 0");
   }
-  if (best == nullptr || best_s > max_time_difference_s) return std::nullopt;
-  return PlanarPose{best->position_m.x(), best->position_m.y(), YawOf(best->orientation)};
+  std::vector<StampedPose> sorted = trajectory;
+  std::stable_sort(sorted.begin(), sorted.end(), [](const StampedPose& a, const StampedPose& b) {
+    return a.stamp_ns < b.stamp_ns;
+  });
+  std::vector<std::optional<PlanarPose>> poses;
+  poses.reserve(stamps_ns.size());
+  for (TimestampNs stamp_ns : stamps_ns) {
+    poses.push_back(PlanarPoseNearest(sorted, stamp_ns, max_time_difference_s));
+  }
+  return poses;
 }
 
 }  // namespace littermap::eval

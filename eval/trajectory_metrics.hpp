@@ -51,10 +51,12 @@ std::vector<std::pair<std::size_t, std::size_t>> AssociateByTime(
     const std::vector<StampedPose>& estimate, const std::vector<StampedPose>& reference,
     double max_time_difference_s);
 
-// The pose of a trajectory sorted by stamp nearest in time to stamp_ns, as a planar pose (the yaw
-// of its orientation), if it is at most max_time_difference_s away.
-std::optional<PlanarPose> PlanarPoseNearest(const std::vector<StampedPose>& sorted,
-                                            TimestampNs stamp_ns, double max_time_difference_s);
+// The trajectory's pose nearest in time to each stamp, as a planar pose (the yaw of its
+// orientation), if one is at most max_time_difference_s away. The trajectory need not be sorted.
+// Throws UsageError for a negative or NaN max_time_difference_s.
+std::vector<std::optional<PlanarPose>> PlanarPosesAt(const std::vector<StampedPose>& trajectory,
+                                                     const std::vector<TimestampNs>& stamps_ns,
+                                                     double max_time_difference_s);
 
 // Throws BadInputError if fewer than 2 poses associate (or fewer than 3 for the alignment).
 TrajectoryMetrics EvaluateTrajectory(const std::vector<StampedPose>& estimate,

@@ -54,7 +54,8 @@ TEST(EvalSettleCli, TheCsailReferenceMovesADecimetreLittermapsTrajectoryHardly) 
   }
   // Measured: littermap's trajectory moves 0.010 m ATE / 0.003 m RPE, the reference 0.099 m /
   // 0.028 m; the settled reference lies 0.048 m from littermap's trajectory, the reference
-  // itself 0.106 m.
+  // itself 0.106 m. The bounds keep the two trajectories apart by a factor of 3.5 at least, with
+  // room for another compiler's or Ceres version's rounding.
   EXPECT_LT(ours["ate_rmse_m"].get<double>(), 0.02);
   EXPECT_LT(ours["rpe_trans_mean_m"].get<double>(), 0.006);
   EXPECT_GT(reference["ate_rmse_m"].get<double>(), 0.07);

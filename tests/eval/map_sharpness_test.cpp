@@ -5,16 +5,24 @@
 #include "eval/map_sharpness.hpp"
 
 #include <limits>
+#include <numbers>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
-#include "room_run.hpp"
+#include "support/room_run.hpp"
 
 namespace littermap::eval {
 namespace {
+
+using testing::kBaseLaser;
+using testing::kDeg;
+using testing::Perturbed;
+using testing::RoomRun;
+using testing::RoomScans;
+using testing::Stamped;
 
 TEST(MapSharpness, TruePosesDrawTheThinnestWalls) {
   const RoomScans run = RoomRun();

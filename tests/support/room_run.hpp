@@ -1,6 +1,6 @@
 #pragma once
-// Scans of a known room for the eval tests: a square room, a laser on a base driving a circle in
-// it, the true poses, and those poses with seeded noise.
+// Scans of a known room for the tests of trajectory measures: a square room, a laser on a base
+// driving a circle in it, the true poses, and those poses with seeded noise.
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,9 @@
 #include "core/planar_pose.hpp"
 #include "eval/trajectory_metrics.hpp"
 
-namespace littermap::eval {
+namespace littermap::testing {
+
+using eval::StampedPose;
 
 // A square room [2 cm, 10.02 m]^2: its walls run through the middle of 5 cm cells, not along
 // cell borders (where rounding would split a wall over two rows).
@@ -92,4 +94,4 @@ inline std::vector<StampedPose> Perturbed(const std::vector<StampedPose>& poses,
   return perturbed;
 }
 
-}  // namespace littermap::eval
+}  // namespace littermap::testing
