@@ -39,12 +39,16 @@ struct TrajectoryArguments {
   eval::TrajectoryMetricsOptions options;
 };
 
-std::vector<eval::StampedPose> Load(const std::string& path) {
-  std::vector<eval::StampedPose> poses;
-  for (const TumPose& pose : ReadTumTrajectory(path)) {
-    poses.push_back({pose.stamp_ns, pose.position_m, pose.orientation});
+std::vector<eval::StampedPose> ToStamped(const std::vector<TumPose>& poses) {
+  std::vector<eval::StampedPose> stamped;
+  for (const TumPose& pose : poses) {
+    stamped.push_back({pose.stamp_ns, pose.position_m, pose.orientation});
   }
-  return poses;
+  return stamped;
+}
+
+std::vector<eval::StampedPose> Load(const std::string& path) {
+  return ToStamped(ReadTumTrajectory(path));
 }
 
 void RunTrajectory(const TrajectoryArguments& arguments) {
@@ -189,14 +193,10 @@ struct SettleArguments {
   reconstruct::ScanSettlingOptions options;
 };
 
-std::vector<eval::StampedPose> ToStamped(
-    const std::vector<std::pair<TimestampNs, PlanarPose>>& poses) {
-  std::vector<eval::StampedPose> stamped;
-  for (const auto& [stamp_ns, pose] : poses) {
-    const TumPose tum = TumPoseFromPlanar(stamp_ns, pose);
-    stamped.push_back({tum.stamp_ns, tum.position_m, tum.orientation});
-  }
-  return stamped;
+std::vector<TumPose> ToTum(const std::vector<std::pair<TimestampNs, PlanarPose>>& poses) {
+  std::vector<TumPose> tum;
+  for (const auto& [stamp_ns, pose] : poses) tum.push_back(TumPoseFromPlanar(stamp_ns, pose));
+  return tum;
 }
 
 // The scans of the bag placed with the trajectory's poses and aligned; warnings for what was
@@ -244,15 +244,10 @@ void RunSettle(const SettleArguments& arguments, CliContext& context) {
     throw UsageError(arguments.output + ": its directory does not exist");
   }
   const reconstruct::ScanSettling settling = Settle(arguments, context);
+  const std::vector<TumPose> settled = ToTum(settling.settled);
   const eval::TrajectoryMetrics moved =
-      eval::EvaluateTrajectory(ToStamped(settling.given), ToStamped(settling.settled), {});
-  if (!output.empty()) {
-    std::vector<TumPose> settled;
-    for (const auto& [stamp_ns, pose] : settling.settled) {
-      settled.push_back(TumPoseFromPlanar(stamp_ns, pose));
-    }
-    WriteTumTrajectory(output, settled);
-  }
+      eval::EvaluateTrajectory(ToStamped(ToTum(settling.given)), ToStamped(settled), {});
+  if (!output.empty()) WriteTumTrajectory(output, settled);
   if (arguments.json) {
     nlohmann::ordered_json json;
     json["scans"] = settling.scans;
