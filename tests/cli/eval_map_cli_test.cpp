@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/carmen_import.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -18,14 +19,8 @@ using testing::Quote;
 using testing::RunLittermap;
 
 TEST(EvalMapCli, LittermapDrawsTheIntelLabSharperThanItsReference) {
-  const auto log =
-      std::filesystem::path(LITTERMAP_DATASETS_DIR) / "carmen" / "intel-corrected.log.gz";
-  ASSERT_TRUE(std::filesystem::exists(log)) << "missing data set " << log;
   testing::TempDir dir;
-  ASSERT_EQ(RunLittermap("-q import carmen " + Quote(log) + " -o " + Quote(dir / "bag") +
-                         " --reference " + Quote(dir / "ref.tum") + " --odometry-noise 1")
-                .exit_code,
-            0);
+  ASSERT_NO_FATAL_FAILURE(testing::ImportCarmen("intel", 1, dir.path()));
   const auto run =
       RunLittermap("-q reconstruct " + Quote(dir / "bag") + " -o " + Quote(dir / "run"));
   ASSERT_EQ(run.exit_code, 0) << run.output;

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/carmen_import.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -25,14 +26,8 @@ double Ate(const std::filesystem::path& estimate, const std::filesystem::path& r
 }
 
 TEST(EvalSettleCli, TheCsailReferenceMovesADecimetreLittermapsTrajectoryHardly) {
-  const auto log =
-      std::filesystem::path(LITTERMAP_DATASETS_DIR) / "carmen" / "csail-corrected.log.gz";
-  ASSERT_TRUE(std::filesystem::exists(log)) << "missing data set " << log;
   testing::TempDir dir;
-  ASSERT_EQ(RunLittermap("-q import carmen " + Quote(log) + " -o " + Quote(dir / "bag") +
-                         " --reference " + Quote(dir / "ref.tum") + " --odometry-noise 1")
-                .exit_code,
-            0);
+  ASSERT_NO_FATAL_FAILURE(testing::ImportCarmen("csail", 1, dir.path()));
   const auto run =
       RunLittermap("-q reconstruct " + Quote(dir / "bag") + " -o " + Quote(dir / "run"));
   ASSERT_EQ(run.exit_code, 0) << run.output;

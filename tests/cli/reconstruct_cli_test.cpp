@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/carmen_import.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -16,8 +17,6 @@ namespace littermap {
 namespace {
 
 using testing::RunLittermap;
-
-const std::filesystem::path kDatasets(LITTERMAP_DATASETS_DIR);
 
 using testing::Quote;
 
@@ -27,13 +26,8 @@ std::string Slurp(const std::filesystem::path& path) {
 }
 
 TEST(ReconstructCli, OrebroRunDirectoryAndEvaluation) {
-  const auto log = kDatasets / "carmen" / "orebro-corrected.log.gz";
-  ASSERT_TRUE(std::filesystem::exists(log)) << "missing data set " << log;
   testing::TempDir dir;
-  ASSERT_EQ(RunLittermap("-q import carmen " + Quote(log) + " -o " + Quote(dir / "bag") +
-                         " --reference " + Quote(dir / "ref.tum") + " --odometry-noise 2")
-                .exit_code,
-            0);
+  ASSERT_NO_FATAL_FAILURE(testing::ImportCarmen("orebro", 2, dir.path()));
   const auto run =
       RunLittermap("-q reconstruct " + Quote(dir / "bag") + " -o " + Quote(dir / "run"));
   ASSERT_EQ(run.exit_code, 0) << run.output;

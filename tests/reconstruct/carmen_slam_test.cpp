@@ -15,25 +15,13 @@
 #include "reconstruct/icp_matcher.hpp"
 #include "reconstruct/reconstruction.hpp"
 #include "reconstruct/slam_pipeline.hpp"
-#include "support/run_command.hpp"
+#include "support/carmen_import.hpp"
 #include "support/temp_dir.hpp"
 
 namespace littermap::reconstruct {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180;
-
-std::filesystem::path Log(const std::string& name) {
-  return std::filesystem::path(LITTERMAP_DATASETS_DIR) / "carmen" / (name + "-corrected.log.gz");
-}
-
-void Import(const std::string& name, const testing::TempDir& dir) {
-  ASSERT_TRUE(std::filesystem::exists(Log(name))) << Log(name) << " is missing";
-  const auto result = littermap::testing::RunLittermap(
-      "-q import carmen " + Log(name).string() + " -o " + (dir / "bag").string() + " --reference " +
-      (dir / "ref.tum").string() + " --odometry-noise 1");
-  ASSERT_EQ(result.exit_code, 0) << result.output;
-}
 
 PlanarPose Planar(const TumPose& pose) {
   const Eigen::Vector3d x = pose.orientation * Eigen::Vector3d::UnitX();
@@ -42,7 +30,7 @@ PlanarPose Planar(const TumPose& pose) {
 
 TEST(CarmenSlam, IcpOnRealIntelScans) {
   testing::TempDir dir;
-  Import("intel", dir);
+  ASSERT_NO_FATAL_FAILURE(littermap::testing::ImportCarmen("intel", 1, dir.path()));
   std::vector<std::string> warnings;
   const PlanarPose T_base_laser = ReadLaserExtrinsic(dir / "bag", {}, &warnings);
   const auto scans = ReadScans(dir / "bag", "/scan");
@@ -104,7 +92,7 @@ WholeLog ReconstructWholeLog(const testing::TempDir& dir, const ReconstructionOp
 
 TEST(CarmenSlam, AcesWholeLogMeetsAccuracyTargets) {
   testing::TempDir dir;
-  Import("aces", dir);
+  ASSERT_NO_FATAL_FAILURE(littermap::testing::ImportCarmen("aces", 1, dir.path()));
   const WholeLog log = ReconstructWholeLog(dir, {});
   EXPECT_EQ(log.slam.associated_poses, 440u);
   // Measured on this log with seed 1: ATE 0.069 m, RPE 0.041 m, odometry ATE 10.4 m. The targets
@@ -117,7 +105,7 @@ TEST(CarmenSlam, AcesWholeLogMeetsAccuracyTargets) {
 
 TEST(CarmenSlam, ScanAlignmentBringsTheIntelLabCloserToTheReference) {
   testing::TempDir dir;
-  Import("intel", dir);
+  ASSERT_NO_FATAL_FAILURE(littermap::testing::ImportCarmen("intel", 1, dir.path()));
   ReconstructionOptions without;
   without.slam.alignment_mode = AlignmentMode::kOff;
   const WholeLog before = ReconstructWholeLog(dir, without);
