@@ -11,6 +11,7 @@
 #include "capture/tum_trajectory.hpp"
 #include "core/sqlite_database.hpp"
 #include "eval/trajectory_metrics.hpp"
+#include "support/carmen_import.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -26,14 +27,12 @@ using testing::Quote;
 // orebro imported with odometry noise `seed` and reconstructed into dir/run<seed>, with one
 // item at (1, 2) in the run's frame.
 std::filesystem::path ReconstructedRun(const std::filesystem::path& dir, int seed) {
-  const auto log = kDatasets / "carmen" / "orebro-corrected.log.gz";
-  const auto bag = dir / ("bag" + std::to_string(seed));
+  const auto imported = dir / ("import" + std::to_string(seed));
   const auto run = dir / ("run" + std::to_string(seed));
-  EXPECT_EQ(RunLittermap("-q import carmen " + Quote(log) + " -o " + Quote(bag) +
-                         " --odometry-noise " + std::to_string(seed))
-                .exit_code,
-            0);
-  EXPECT_EQ(RunLittermap("-q reconstruct " + Quote(bag) + " -o " + Quote(run)).exit_code, 0);
+  std::filesystem::create_directories(imported);
+  EXPECT_NO_FATAL_FAILURE(testing::ImportCarmen("orebro", seed, imported));
+  EXPECT_EQ(
+      RunLittermap("-q reconstruct " + Quote(imported / "bag") + " -o " + Quote(run)).exit_code, 0);
   std::ofstream(run / "items.csv") << "id,class,x,y,z,size_m\n1,can,1,2,0,0.1\n";
   return run;
 }
