@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
-# SLAM speed and memory benchmark on the simulated parks: each world simulated once (cached in
-# WORK_DIR; park_large takes about 12 minutes), then reconstructed with the hybrid laser + RGB-D
-# tracker and with the laser alone, pinned to one core. Prints one row per world x mode: scans,
-# run time, scans/s, peak resident memory of the whole process, ATE and RPE against the truth,
-# and map_vs_truth: the 5 cm cells the scans occupy when drawn with the trajectory, over those
-# with the true poses (`littermap eval map`).
-#   bench/slam_park.sh [LITTERMAP] [WORK_DIR] [WORLD...]     (WORLD: park_small, park_large, ...)
+# SLAM speed, memory and accuracy benchmark on the simulated parks: each world simulated once
+# (cached in WORK_DIR; park_large takes about 12 minutes), then reconstructed with the hybrid
+# laser + RGB-D tracker and with the laser alone, pinned to one core. Prints one row per run x
+# mode: scans, run time, scans/s, peak resident memory of the whole process, ATE and RPE against
+# the truth, and map_vs_truth: the 5 cm cells the scans occupy when drawn with the trajectory,
+# over those with the true poses (`littermap eval map`).
+#   bench/slam_park.sh [LITTERMAP] [WORK_DIR] [RUN...]
+# RUN is a world (park_small, park_large, ...) as shipped, or WORLD:SEED for the same world and
+# route with another draw of sensor noise, odometry drift and timing (`simulate --run-seed`).
+# One run of a park is one draw: its ATE can differ by a factor of two from the next draw's, so
+# the default measures park_small over four draws and ends with each world's spread per mode.
 # A benchmark, not a test: it prints, it does not assert.
 set -euo pipefail
 
@@ -14,7 +18,9 @@ littermap=${1:-$here/build/cli/littermap}
 work=${2:-${TMPDIR:-/tmp}/littermap-slam-park}
 shift $(( $# > 2 ? 2 : $# ))
 worlds=("$@")
-if [[ ${#worlds[@]} -eq 0 ]]; then worlds=(park_small park_large); fi
+if [[ ${#worlds[@]} -eq 0 ]]; then
+  worlds=(park_small park_small:1 park_small:2 park_small:3 park_large)
+fi
 mkdir -p "$work"
 # shellcheck source=bench/common.sh
 source "$here/bench/common.sh"
@@ -32,19 +38,24 @@ json.dump({"wall_s": wall_s, "peak_mib": peak_kib / 1024}, open(out, "w"))
 EOF
 }
 
-printf '%-12s %-7s %7s %8s %8s %8s %8s %8s %6s %12s\n' world mode scans time_s scans/s peak_MiB \
+printf '%-14s %-7s %7s %8s %8s %8s %8s %8s %6s %12s\n' run mode scans time_s scans/s peak_MiB \
   ATE_m RPE_tr_m loops map_vs_truth
-for world in "${worlds[@]}"; do
-  bag=$work/$world/bag
-  truth=$work/$world/truth
+rows=$work/rows.tsv
+: >"$rows"
+for run_name in "${worlds[@]}"; do
+  world=${run_name%%:*}
+  seed_flags=()
+  if [[ $run_name == *:* ]]; then seed_flags=(--run-seed "${run_name#*:}"); fi
+  bag=$work/$run_name/bag
+  truth=$work/$run_name/truth
   if [[ ! -f $truth/trajectory.tum ]]; then
-    rm -rf "${work:?}/$world"
-    mkdir -p "$work/$world"
+    rm -rf "${work:?}/$run_name"
+    mkdir -p "$work/$run_name"
     "$littermap" -q simulate "$here/samples/worlds/$world.yaml" -o "$bag" --truth "$truth" \
-      >/dev/null
+      "${seed_flags[@]}" >/dev/null
   fi
   for mode in hybrid laser; do
-    run=$work/$world/run-$mode
+    run=$work/$run_name/run-$mode
     flags=()
     if [[ $mode == laser ]]; then flags=(--no-rgbd); fi
     rm -rf "$run"
@@ -55,10 +66,25 @@ for world in "${worlds[@]}"; do
     "$littermap" -q eval map "$bag" "$run/trajectory.tum" "$truth/trajectory.tum" --json \
       >"$run/map_eval.json"
     map_vs_truth=$(cells_ratio "$run/map_eval.json")
-    printf '%-12s %-7s %7s %8s %8s %8s %8s %8s %6s %12s\n' "$world" "$mode" \
+    printf '%s\t%s\t%s\n' "$world" "$mode" "$(field "$run/eval.json" ate_rmse_m)" >>"$rows"
+    printf '%-14s %-7s %7s %8s %8s %8s %8s %8s %6s %12s\n' "$run_name" "$mode" \
       "$(field "$run/quality.json" scans %d)" "$(field "$run.time.json" wall_s %.1f)" \
       "$(field "$run/quality.json" scans_per_s %.0f)" "$(field "$run.time.json" peak_mib %.0f)" \
       "$(field "$run/eval.json" ate_rmse_m %.3f)" "$(field "$run/eval.json" rpe_trans_mean_m %.3f)" \
       "$(field "$run/quality.json" loop_closures_accepted %d)" "$map_vs_truth"
   done
 done
+# The spread of each world and mode over its runs (draws).
+python3 - "$rows" <<'EOF'
+import collections, sys
+ate = collections.defaultdict(list)
+for line in open(sys.argv[1]):
+    world, mode, value = line.split()
+    ate[(world, mode)].append(float(value))
+print()
+print("%-14s %-7s %5s %10s %10s %10s" % ("world", "mode", "runs", "ATE_min_m", "ATE_mean_m",
+                                         "ATE_max_m"))
+for (world, mode), values in ate.items():
+    print("%-14s %-7s %5d %10.3f %10.3f %10.3f" % (world, mode, len(values), min(values),
+                                                   sum(values) / len(values), max(values)))
+EOF
