@@ -17,9 +17,9 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 littermap=${1:-$here/build/cli/littermap}
 work=${2:-${TMPDIR:-/tmp}/littermap-slam-park}
 shift $(( $# > 2 ? 2 : $# ))
-worlds=("$@")
-if [[ ${#worlds[@]} -eq 0 ]]; then
-  worlds=(park_small park_small:1 park_small:2 park_small:3 park_large)
+run_names=("$@")
+if [[ ${#run_names[@]} -eq 0 ]]; then
+  run_names=(park_small park_small:1 park_small:2 park_small:3 park_large)
 fi
 mkdir -p "$work"
 # shellcheck source=bench/common.sh
@@ -42,7 +42,7 @@ printf '%-14s %-7s %7s %8s %8s %8s %8s %8s %6s %12s\n' run mode scans time_s sca
   ATE_m RPE_tr_m loops map_vs_truth
 rows=$work/rows.tsv
 : >"$rows"
-for run_name in "${worlds[@]}"; do
+for run_name in "${run_names[@]}"; do
   world=${run_name%%:*}
   seed_flags=()
   if [[ $run_name == *:* ]]; then seed_flags=(--run-seed "${run_name#*:}"); fi
@@ -66,11 +66,12 @@ for run_name in "${worlds[@]}"; do
     "$littermap" -q eval map "$bag" "$run/trajectory.tum" "$truth/trajectory.tum" --json \
       >"$run/map_eval.json"
     map_vs_truth=$(cells_ratio "$run/map_eval.json")
-    printf '%s\t%s\t%s\n' "$world" "$mode" "$(field "$run/eval.json" ate_rmse_m)" >>"$rows"
+    ate_m=$(field "$run/eval.json" ate_rmse_m)
+    printf '%s\t%s\t%s\n' "$world" "$mode" "$ate_m" >>"$rows"
     printf '%-14s %-7s %7s %8s %8s %8s %8s %8s %6s %12s\n' "$run_name" "$mode" \
       "$(field "$run/quality.json" scans %d)" "$(field "$run.time.json" wall_s %.1f)" \
       "$(field "$run/quality.json" scans_per_s %.0f)" "$(field "$run.time.json" peak_mib %.0f)" \
-      "$(field "$run/eval.json" ate_rmse_m %.3f)" "$(field "$run/eval.json" rpe_trans_mean_m %.3f)" \
+      "$(printf %.3f "$ate_m")" "$(field "$run/eval.json" rpe_trans_mean_m %.3f)" \
       "$(field "$run/quality.json" loop_closures_accepted %d)" "$map_vs_truth"
   done
 done
