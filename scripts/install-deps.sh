@@ -8,7 +8,7 @@ packages=(
   build-essential cmake pkg-config
   libeigen3-dev libopencv-dev libsqlite3-dev zlib1g-dev libpng-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
-  libgtest-dev libbenchmark-dev libceres-dev libnanoflann-dev
+  libgtest-dev libbenchmark-dev libceres-dev libnanoflann-dev ccache
   libproj-dev libtiff-dev libgeotiff-dev libpcl-dev libopenni2-dev
   python3 chromium
 )
