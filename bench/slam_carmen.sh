@@ -7,7 +7,11 @@
 # with littermap's trajectory, over those with the reference's (`littermap eval map`; < 1: the
 # scans lie more consistently over each other than with the reference poses); ref_moves and
 # est_moves: how far (ATE RMSE, metres) the reference and littermap's trajectory move when settled
-# onto their scans (`littermap eval settle`): how far the log's own scans move the reference.
+# onto their scans (`littermap eval settle`): how far the log's own scans move the reference;
+# noise_free_ATE: littermap's ATE when the odometry is the reference's own motion, without noise
+# (once a log): how far the log's scans pull a trajectory from the reference when the odometry
+# holds it there. Where it is as large as the seeds' ATE, the odometry noise is not what the ATE
+# measures.
 #   bench/slam_carmen.sh [LITTERMAP] [WORK_DIR] [LOG_NAME...]
 # SEEDS="1 2 3" picks the odometry noise seeds, OPTIONS=FILE.yaml passes reconstruct --options.
 # A benchmark, not a test: it prints, it does not assert.
@@ -29,10 +33,21 @@ mkdir -p "$work"
 # shellcheck source=bench/common.sh
 source "$here/bench/common.sh"
 
-printf '%-16s %4s %9s %9s %9s %9s %6s %6s %8s %7s %10s %9s %9s\n' log seed odom_ATE ATE RPE_tr \
-  RPE_rot loops rej scans/s time_s map_vs_ref ref_moves est_moves
+printf '%-16s %4s %9s %9s %9s %9s %6s %6s %8s %7s %10s %9s %9s %14s\n' log seed odom_ATE ATE \
+  RPE_tr RPE_rot loops rej scans/s time_s map_vs_ref ref_moves est_moves noise_free_ATE
 declare -A ref_settled
 for log in "${logs[@]}"; do
+  # The reference's own motion as the odometry: the same scans, nothing for SLAM to correct.
+  exact=$work/$log-exact
+  if [[ ! -d $exact ]]; then
+    "$littermap" -q import carmen "$datasets/$log-corrected.log.gz" -o "$exact" \
+      --reference "$work/$log-ref.tum" >/dev/null
+  fi
+  rm -rf "$work/run-$log-exact"
+  "${pin[@]}" "$littermap" -q reconstruct "$exact" -o "$work/run-$log-exact" "${options[@]}" \
+    >/dev/null
+  "$littermap" eval trajectory "$work/run-$log-exact/trajectory.tum" "$work/$log-ref.tum" --json \
+    >"$work/run-$log-exact/eval.json"
   for seed in $seeds; do
     bag=$work/$log-$seed
     ref=$work/$log-ref.tum
@@ -55,13 +70,13 @@ for log in "${logs[@]}"; do
       ref_settled[$log]=1
     fi
     "$littermap" -q eval settle "$bag" "$run/trajectory.tum" --json >"$run/settle.json"
-    printf '%-16s %4s %9s %9s %9s %9s %6s %6s %8.0f %7.2f %10s %9s %9s\n' "$log" "$seed" \
+    printf '%-16s %4s %9s %9s %9s %9s %6s %6s %8.0f %7.2f %10s %9s %9s %14s\n' "$log" "$seed" \
       "$(field "$run/odometry_eval.json" ate_rmse_m)" "$(field "$run/eval.json" ate_rmse_m)" \
       "$(field "$run/eval.json" rpe_trans_mean_m)" "$(field "$run/eval.json" rpe_rot_mean_deg)" \
       "$(field "$run/quality.json" loop_closures_accepted %d)" \
       "$(field "$run/quality.json" loop_closures_rejected %d)" \
       "$(field "$run/quality.json" scans_per_s)" "$(field "$run/quality.json" run_time_s)" \
       "$map_vs_ref" "$(field "$work/$log-ref-settle.json" ate_rmse_m)" \
-      "$(field "$run/settle.json" ate_rmse_m)"
+      "$(field "$run/settle.json" ate_rmse_m)" "$(field "$work/run-$log-exact/eval.json" ate_rmse_m)"
   done
 done
