@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include <Eigen/Cholesky>
@@ -46,7 +47,7 @@ Accumulated Accumulate(const Points2& source, const IcpTarget& target, const Pla
     const Eigen::Vector2d moved(rp.x() + T.x_m, rp.y() + T.y_m);
     std::size_t index = 0;
     double distance_sq = 0;
-    if (!target.Nearest(moved, &index, &distance_sq) || distance_sq > max_sq) continue;
+    if (!target.NearestWithin(moved, max_sq, &index, &distance_sq)) continue;
     const Eigen::Vector2d error = moved - target.points()[index];
     const Eigen::Vector2d perp(-rp.y(), rp.x());
     const Eigen::Vector2d n =
@@ -95,6 +96,23 @@ Eigen::Vector2d LineNormal(const Points2& points, std::span<const std::uint32_t>
   return {-direction.y(), direction.x()};
 }
 
+// knnSearch restricted to the points no farther than sqrt(bound_sq): nanoflann's k-nearest
+// result set with its worst distance preset to the bound, so the search never visits a subtree
+// beyond it (plain knnSearch visits them until it has found k points, however far). The preset is
+// a hair above the bound, since the search prunes on a lower bound of the distance summed up in
+// another order; the points beyond the bound itself are then dropped. Same neighbours, in the same
+// order, as knnSearch's within the bound. Returns how many it found.
+std::size_t KnnWithin(const KdTree& tree, const double* query, std::size_t k, double bound_sq,
+                      std::uint32_t* indices, double* distances_sq) {
+  nanoflann::KNNResultSet<double, std::uint32_t> result(k);
+  result.init(indices, distances_sq);
+  distances_sq[k - 1] = bound_sq * (1 + 1e-9) + std::numeric_limits<double>::min();
+  tree.findNeighbors(result, query, nanoflann::SearchParams());
+  std::size_t within = result.size();
+  while (within > 0 && distances_sq[within - 1] > bound_sq) --within;
+  return within;
+}
+
 struct IcpTarget::Index {
   PointsAdaptor adaptor;
   KdTree tree;
@@ -122,11 +140,10 @@ IcpTarget::IcpTarget(Points2 points, const IcpOptions& options) : points_(std::m
   std::vector<double> distances(k);
   normals_.resize(points_.size());
   for (std::size_t i = 0; i < points_.size(); ++i) {
-    const std::size_t found =
-        index_->tree.knnSearch(points_[i].data(), k, indices.data(), distances.data());
     // Neighbours farther than 0.5 m belong to another surface.
-    std::size_t near = 0;
-    while (near < found && distances[near] < 0.25) ++near;
+    std::size_t near =
+        KnnWithin(index_->tree, points_[i].data(), k, 0.25, indices.data(), distances.data());
+    while (near > 0 && !(distances[near - 1] < 0.25)) --near;
     normals_[i] = LineNormal(points_, std::span(indices.data(), near));
   }
 }
@@ -151,11 +168,13 @@ Points2 EstimateNormals(const Points2& points, const IcpOptions& options) {
 
 IcpTarget::~IcpTarget() = default;
 
-bool IcpTarget::Nearest(const Eigen::Vector2d& query, std::size_t* index,
-                        double* distance_sq) const {
+bool IcpTarget::NearestWithin(const Eigen::Vector2d& query, double max_distance_sq,
+                              std::size_t* index, double* distance_sq) const {
   if (points_.empty()) return false;
   std::uint32_t found = 0;
-  if (index_->tree.knnSearch(query.data(), 1, &found, distance_sq) == 0) return false;
+  if (KnnWithin(index_->tree, query.data(), 1, max_distance_sq, &found, distance_sq) == 0) {
+    return false;
+  }
   *index = found;
   return true;
 }

@@ -63,8 +63,10 @@ class IcpTarget {
   // Unit normal, or zero when the neighbourhood is not line-like (point-to-point is used there).
   const Eigen::Vector2d& normal(std::size_t i) const { return normals_[i]; }
   bool has_normals() const { return !normals_.empty(); }
-  // Closest target point; false for an empty target.
-  bool Nearest(const Eigen::Vector2d& query, std::size_t* index, double* distance_sq) const;
+  // Closest target point no farther than sqrt(max_distance_sq) from the query; false if there
+  // is none. The bound also bounds the search: matching is fast however far the scan is off.
+  bool NearestWithin(const Eigen::Vector2d& query, double max_distance_sq, std::size_t* index,
+                     double* distance_sq) const;
 
  private:
   struct Index;

@@ -48,7 +48,7 @@ MapRegistrationResult RegisterMap(const Points2& site_points, const Points2& run
     ++result.overlap_points;
     std::size_t nearest = 0;
     double distance_sq = 0;
-    if (target.Nearest(in_site, &nearest, &distance_sq) && distance_sq <= inlier_sq) ++inliers;
+    if (target.NearestWithin(in_site, inlier_sq, &nearest, &distance_sq)) ++inliers;
   }
   if (result.overlap_points > 0) {
     result.matching_ratio =

@@ -45,7 +45,8 @@ MovingEchoResult MovingEchoFilter::Filter(TimestampNs stamp_ns, const PlanarPose
           options_.static_tolerance_m + options_.static_tolerance_per_m * p.norm();
       std::size_t index = 0;
       double distance_sq = 0;
-      if (reference->echoes->Nearest(Transform(T_earlier_now, p), &index, &distance_sq) &&
+      if (reference->echoes->NearestWithin(Transform(T_earlier_now, p), max_sq, &index,
+                                           &distance_sq) &&
           distance_sq > tolerance * tolerance && distance_sq < max_sq) {
         ++result.moving;
         continue;

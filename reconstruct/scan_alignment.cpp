@@ -110,7 +110,7 @@ PairForm Associate(const Frame& source, const Frame& target, const PlanarPose& T
                                 s * p.x() + c * p.y() + T_target_source.y_m);
     std::size_t index = 0;
     double distance_sq = 0;
-    if (!target.target->Nearest(moved, &index, &distance_sq) || distance_sq > max_sq) continue;
+    if (!target.target->NearestWithin(moved, max_sq, &index, &distance_sq)) continue;
     const Eigen::Vector2d& q = target.target->points()[index];
     const Eigen::Vector2d& n = target.target->normal(index);
     if (n.squaredNorm() > 0.5) {

@@ -4,7 +4,9 @@
 #include "reconstruct/icp_matcher.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <random>
 
 #include <gtest/gtest.h>
 #include <Eigen/LU>
@@ -63,6 +65,44 @@ TEST(IcpMatcher, EmptyInputIsNotConverged) {
   EXPECT_FALSE(MatchIcp({{1, 1}}, target, {}, options).converged);
   const IcpTarget room(RoomPoints({3, 2, 0}), options);
   EXPECT_FALSE(MatchIcp({}, room, {}, options).converged);
+}
+
+// The bounded nearest-point search against brute force: the nearest target point whenever it
+// lies within the bound (the bound itself included), none otherwise.
+TEST(IcpMatcher, NearestWithinIsTheNearestPointInsideTheBound) {
+  const Points2 points = RoomPoints({3.0, 2.0, 0.2});
+  ASSERT_GT(points.size(), 100u);
+  const IcpTarget target(points, IcpOptions{});
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> coordinate(-2.0, 9.0), bound(0.0, 0.8);
+  int inside = 0, outside = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Eigen::Vector2d query(coordinate(random), coordinate(random));
+    double nearest_sq = std::numeric_limits<double>::infinity();
+    for (const Eigen::Vector2d& p : points)
+      nearest_sq = std::min(nearest_sq, (p - query).squaredNorm());
+    const double max_sq = bound(random) * bound(random);
+    std::size_t index = 0;
+    double distance_sq = -1;
+    if (nearest_sq <= max_sq) {
+      ++inside;
+      ASSERT_TRUE(target.NearestWithin(query, max_sq, &index, &distance_sq)) << trial;
+      EXPECT_EQ(distance_sq, nearest_sq) << trial;
+      EXPECT_EQ((points[index] - query).squaredNorm(), nearest_sq) << trial;
+    } else {
+      ++outside;
+      EXPECT_FALSE(target.NearestWithin(query, max_sq, &index, &distance_sq)) << trial;
+    }
+    // The bound is inclusive: a query exactly at the nearest distance finds that point.
+    ASSERT_TRUE(target.NearestWithin(query, nearest_sq, &index, &distance_sq)) << trial;
+    EXPECT_EQ(distance_sq, nearest_sq) << trial;
+  }
+  EXPECT_GT(inside, 100);
+  EXPECT_GT(outside, 100);
+  const IcpTarget empty(Points2{}, IcpOptions{});
+  std::size_t index = 0;
+  double distance_sq = 0;
+  EXPECT_FALSE(empty.NearestWithin({0, 0}, 1e9, &index, &distance_sq));
 }
 
 }  // namespace
