@@ -140,10 +140,9 @@ IcpTarget::IcpTarget(Points2 points, const IcpOptions& options) : points_(std::m
   std::vector<double> distances(k);
   normals_.resize(points_.size());
   for (std::size_t i = 0; i < points_.size(); ++i) {
-    // Neighbours farther than 0.5 m belong to another surface.
-    std::size_t near =
-        KnnWithin(index_->tree, points_[i].data(), k, 0.25, indices.data(), distances.data());
-    while (near > 0 && !(distances[near - 1] < 0.25)) --near;
+    // Neighbours 0.5 m away or farther belong to another surface.
+    const std::size_t near = KnnWithin(index_->tree, points_[i].data(), k,
+                                       std::nextafter(0.25, 0.0), indices.data(), distances.data());
     normals_[i] = LineNormal(points_, std::span(indices.data(), near));
   }
 }
