@@ -46,5 +46,7 @@ void RegisterDetectCommand(CLI::App& app, CliContext& context);
 void RegisterTrainCommands(CLI::App& app, CliContext& context);
 // Adds `eval segmentation` to the `eval` command; call after RegisterEvalCommands.
 void RegisterEvalSegmentationCommand(CLI::App& app, CliContext& context);
+// Adds `eval relations` to the `eval` command; call after RegisterEvalCommands.
+void RegisterEvalRelationsCommand(CLI::App& app, CliContext& context);
 
 }  // namespace littermap::cli

@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
   littermap::cli::RegisterTrainCommands(app, context);
   littermap::cli::RegisterEvalCommands(app, context);
   littermap::cli::RegisterEvalSegmentationCommand(app, context);
+  littermap::cli::RegisterEvalRelationsCommand(app, context);
   littermap::cli::RegisterSiteCommands(app, context);
   littermap::cli::RegisterIngestCommand(app, context);
   littermap::cli::RegisterHeatmapCommand(app, context);
