@@ -13,9 +13,6 @@
 namespace littermap {
 namespace {
 
-// msg::Time holds int32 seconds; keep stamps well inside it (year 2033).
-constexpr double kMaxStampS = 2e9;
-
 msg::Quaternion YawQuaternion(double theta_rad) {
   msg::Quaternion q;
   q.z = std::sin(theta_rad / 2);
@@ -53,14 +50,18 @@ std::string StampWarning(const std::filesystem::path& log_path, const MonotonicS
                          const MonotonicStampOptions& options) {
   const std::string name = log_path.filename().string();
   const std::string total = std::to_string(repair.stamps_ns.size());
+  const std::string out_of_range = repair.out_of_range == 0
+                                       ? std::string()
+                                       : " (" + std::to_string(repair.out_of_range) +
+                                             " outside 0 .. " + Number(options.max_stamp_s) + " s)";
   if (repair.synthesised) {
-    return name + ": the scans carry no usable time stamps (most are not increasing); " +
+    return name + ": the scans carry no usable time stamps" + out_of_range + "; " +
            std::to_string(repair.changed) + " of " + total + " stamps synthesised at " +
            Number(options.nominal_interval_s) + " s per scan";
   }
   return name + ": " + std::to_string(repair.changed) + " of " + total +
-         " scan time stamps were not increasing; moved them " + Number(options.min_step_s * 1000) +
-         " ms after their predecessor";
+         " scan time stamps were not increasing" + out_of_range + "; moved them " +
+         Number(options.min_step_s * 1000) + " ms after their predecessor";
 }
 
 void CollectWarnings(const std::filesystem::path& log_path, const CarmenImportOptions& options,
@@ -139,19 +140,12 @@ CarmenImportResult Summarise(const std::filesystem::path& log_path, const Carmen
 
 }  // namespace
 
-CarmenTimedPoses CarmenReferencePoses(const CarmenLog& log, const std::filesystem::path& log_path,
-                                      const MonotonicStampOptions& options) {
+CarmenTimedPoses CarmenReferencePoses(const CarmenLog& log, const MonotonicStampOptions& options) {
   std::vector<double> raw_s;
   raw_s.reserve(log.scans.size());
   CarmenTimedPoses poses;
   for (std::size_t i = 0; i < log.scans.size(); ++i) {
-    const double stamp = log.scans[i].timestamp_s;
-    if (stamp < 0 || stamp > kMaxStampS) {
-      throw BadInputError(log_path.string() + ":" + std::to_string(log.scan_line_numbers[i]) +
-                          ": field 'timestamp': " + std::to_string(stamp) +
-                          " s is outside 0 .. 2e9 s");
-    }
-    raw_s.push_back(stamp);
+    raw_s.push_back(log.scans[i].timestamp_s);
     poses.robot_poses.push_back(log.scans[i].robot_pose);
   }
   poses.stamp_repair = MakeMonotonicStamps(raw_s, options);
@@ -165,7 +159,7 @@ CarmenImportResult ImportCarmenLog(const std::filesystem::path& log_path,
                                    const ProgressCallback& progress) {
   const CarmenLog log = ReadCarmenLog(log_path, progress);
   CarmenImportResult result = Summarise(log_path, log);
-  const CarmenTimedPoses poses = CarmenReferencePoses(log, log_path, options.stamps);
+  const CarmenTimedPoses poses = CarmenReferencePoses(log, options.stamps);
   result.stamps_changed = poses.stamp_repair.changed;
   result.stamps_synthesised = poses.stamp_repair.synthesised;
   result.duration_s = ToSeconds(poses.stamps_ns.back() - poses.stamps_ns.front());

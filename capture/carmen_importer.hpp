@@ -69,7 +69,7 @@ struct CarmenTimedPoses {
   std::vector<PlanarPose> robot_poses;  // T_world_base of each scan
   MonotonicStampResult stamp_repair;
 };
-CarmenTimedPoses CarmenReferencePoses(const CarmenLog& log, const std::filesystem::path& log_path,
+CarmenTimedPoses CarmenReferencePoses(const CarmenLog& log,
                                       const MonotonicStampOptions& options = {});
 
 }  // namespace littermap
