@@ -1,13 +1,15 @@
 #pragma once
 // A CARMEN log of ../shared/datasets/carmen imported as the tests use it: the run bag in
 // DIR/bag and the log's corrected poses in DIR/ref.tum, with the odometry noise of a seed.
+// The importer is called as a library function, as `littermap import carmen` calls it.
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <string>
 
-#include "support/run_command.hpp"
+#include "capture/carmen_importer.hpp"
+#include "core/error.hpp"
 
 namespace littermap::testing {
 
@@ -18,10 +20,14 @@ inline void ImportCarmen(const std::string& name, int odometry_noise_seed,
   const auto log =
       std::filesystem::path(LITTERMAP_DATASETS_DIR) / "carmen" / (name + "-corrected.log.gz");
   ASSERT_TRUE(std::filesystem::exists(log)) << "missing data set " << log;
-  const CommandResult result = RunLittermap(
-      "-q import carmen " + Quote(log) + " -o " + Quote(dir / "bag") + " --reference " +
-      Quote(dir / "ref.tum") + " --odometry-noise " + std::to_string(odometry_noise_seed));
-  ASSERT_EQ(result.exit_code, 0) << result.output;
+  CarmenImportOptions options;
+  options.reference_path = dir / "ref.tum";
+  options.odometry_noise_seed = static_cast<std::uint64_t>(odometry_noise_seed);
+  try {
+    ImportCarmenLog(log, dir / "bag", options);
+  } catch (const Error& error) {
+    FAIL() << "importing " << log << ": " << error.what();
+  }
 }
 
 }  // namespace littermap::testing
