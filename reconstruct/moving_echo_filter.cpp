@@ -13,6 +13,9 @@ void MovingEchoFilterOptions::Validate() const {
         "moving echoes: need min_interval_s > 0, static_tolerance_m > 0, "
         "static_tolerance_per_m >= 0 and max_shift_m > static_tolerance_m");
   }
+  if (!(min_relief_m >= 0) || !(relief_window_m > 0)) {
+    throw UsageError("moving echoes: need min_relief_m >= 0 and relief_window_m > 0");
+  }
   if (!(max_moving_fraction > 0 && max_moving_fraction <= 1)) {
     throw UsageError("moving echoes: max_moving_fraction must be in (0, 1]");
   }

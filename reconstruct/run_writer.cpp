@@ -74,12 +74,14 @@ std::string QualityJson(const SlamQuality& quality, const ReconstructionResult& 
   json["scans_tracked"] = quality.scans_tracked;
   json["scans_without_echoes"] = quality.scans_without_echoes;
   json["ground_echoes_dropped"] = quality.ground_echoes;
+  json["scans_moving_echo_filtered"] = quality.scans_moving_echo_filtered;
   json["moving_echoes_dropped"] = quality.moving_echoes;
   json["scans_given_up_to_moving_echoes"] = quality.scans_moving_echoes;
   json["stamps_backwards"] = quality.stamps_backwards;
   json["stamps_duplicate"] = quality.stamps_duplicate;
   json["odometry_missing"] = quality.odometry_missing;
   json["odometry_rejected"] = quality.odometry_rejected;
+  json["odometry_arbitrated_by_laser"] = quality.odometry_arbitrated;
   nlohmann::ordered_json routines;
   for (std::size_t r = 0; r < quality.routine_counts.size(); ++r) {
     routines[std::string(RoutineName(static_cast<Routine>(r)))] = quality.routine_counts[r];

@@ -52,6 +52,7 @@ SlamPipeline::SlamPipeline(const SlamOptions& options, const PlanarPose& T_base_
       tracker_(options.tracker, &map_, rgbd),
       loop_closer_(options.loops),
       moving_echoes_(options.moving_echoes),
+      terrain_relief_(options.moving_echoes.relief_window_m),
       grid_(options.grid) {}
 
 void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdometryPose>& odometry,
@@ -80,13 +81,19 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdomet
   if (points.valid_beams >= options_.min_scan_points) {
     input.points_base = VoxelDownsample(map_points_base, options_.scan_voxel_size_m);
     // Wheels alone can slip by degrees in a quarter of a second: only a gyro's heading will do.
-    if (options_.moving_echoes.enabled && tilt && odometry && odometry->heading_from_gyro) {
+    const MovingEchoMode mode = options_.moving_echoes.mode;
+    if (mode != MovingEchoMode::kOff && tilt && odometry && odometry->heading_from_gyro) {
+      // Every scan is kept for comparison; its echoes are filtered where the terrain calls for it.
+      const double relief_m = terrain_relief_.Add(odometry->T_odom_base, odometry->z_m);
       MovingEchoResult still =
-          moving_echoes_.Filter(scan.stamp_ns, odometry->T_odom_base, std::move(input.points_base));
-      quality_.moving_echoes += still.moving;
-      if (still.given_up) ++quality_.scans_moving_echoes;  // tracked like a scan without echoes
-      input.points_base = still.given_up ? Points2{} : still.points_base;
-      map_points_base = std::move(still.points_base);  // the map does not draw the arcs either
+          moving_echoes_.Filter(scan.stamp_ns, odometry->T_odom_base, input.points_base);
+      if (mode == MovingEchoMode::kOn || relief_m > options_.moving_echoes.min_relief_m) {
+        ++quality_.scans_moving_echo_filtered;
+        quality_.moving_echoes += still.moving;
+        if (still.given_up) ++quality_.scans_moving_echoes;  // tracked like a scan without echoes
+        input.points_base = still.given_up ? Points2{} : still.points_base;
+        map_points_base = std::move(still.points_base);  // the map does not draw the arcs either
+      }
     }
   } else {
     ++quality_.scans_without_echoes;  // tracked on the prediction alone
@@ -225,6 +232,7 @@ void SlamPipeline::Finish() {
   }
   quality_.key_frames = map_.key_frames().size();
   quality_.odometry_rejected = tracker_.odometry_rejected();
+  quality_.odometry_arbitrated = tracker_.odometry_arbitrated();
   const auto& frames = map_.key_frames();
   const auto hits_of = [&](std::size_t i) {
     Points2 hits;

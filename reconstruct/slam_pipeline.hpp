@@ -21,6 +21,7 @@
 #include "reconstruct/pose_graph.hpp"
 #include "reconstruct/scan_alignment.hpp"
 #include "reconstruct/scan_points.hpp"
+#include "reconstruct/terrain_relief.hpp"
 #include "reconstruct/tracker.hpp"
 
 namespace littermap::reconstruct {
@@ -79,12 +80,14 @@ struct SlamQuality {
   std::size_t scans_tracked = 0;
   std::size_t scans_without_echoes = 0;         // too few valid ranges (all max-range / NaN)
   std::size_t ground_echoes = 0;                // dropped as ground hits of a tilted scanner
+  std::size_t scans_moving_echo_filtered = 0;   // scans the moving-echo filter ran on
   std::size_t moving_echoes = 0;                // dropped as moving with the robot
   std::size_t scans_moving_echoes = 0;          // given up: mostly moving echoes
   std::size_t stamps_backwards = 0;             // dropped
   std::size_t stamps_duplicate = 0;             // dropped
   std::size_t odometry_missing = 0;             // constant-velocity prediction used
-  std::size_t odometry_rejected = 0;            // implausible jump
+  std::size_t odometry_rejected = 0;            // beyond its limits, or overruled by the laser
+  std::size_t odometry_arbitrated = 0;          // the laser chose odometry or constant velocity
   std::array<std::size_t, 4> routine_counts{};  // indexed by Routine
   std::size_t key_frames = 0;
   std::size_t loop_candidates = 0;
@@ -136,6 +139,7 @@ class SlamPipeline {
   Tracker tracker_;
   LoopCloser loop_closer_;
   MovingEchoFilter moving_echoes_;
+  TerrainRelief terrain_relief_;
   OccupancyGrid grid_;
   std::vector<PoseGraphEdge> edges_;
   std::vector<std::size_t> unchecked_loops_;  // indices into edges_ since the last optimisation

@@ -8,9 +8,11 @@
 //      with the prediction;
 //   otherwise keep the predicted pose (routine "odometry-only").
 // The prediction is the odometry increment since the last scan, or a constant-velocity model
-// when odometry is missing or implausible. Matches of routines 1 and 2 are fused with it, each
-// weighted by its information; routine 3's pose only in heading, and only where a gyro turned
-// the odometry (the wheels may have slipped where the laser lost the map).
+// when odometry is missing or faster than its limits; where routine 1 does not confirm the one
+// chosen, it tries the other, and the one the laser confirms wins (odometry stalls, slips and
+// catches up; closely stamped scans can be far apart). Matches of routines 1 and 2 are fused with
+// it, each weighted by its information; routine 3's pose only in heading, and only where a gyro
+// turned the odometry (the wheels may have slipped where the laser lost the map).
 
 #include <cstddef>
 #include <optional>
@@ -48,6 +50,18 @@ struct TrackerOptions {
   double max_correction_m = 0.3;
   double max_correction_rad = 0.12;
   double max_correction_fraction = 0.25;
+  // A match that overlays at least this share of its echoes may correct the heading up to
+  // max_large_turn_correction_rad: real odometry glitches by 10-20 degrees in one step.
+  double min_ratio_large_turn_correction = 0.9;
+  double max_large_turn_correction_rad = 0.4;
+  // The laser arbitrates between the odometry and constant velocity only where the matches from
+  // both predictions end this close together, or the other's overlays this much more of the scan.
+  double max_arbitration_disagreement_m = 0.1;
+  double max_arbitration_disagreement_rad = 0.05;
+  double min_arbitration_ratio_gain = 0.2;
+  // Constant velocity predicts nothing over a longer gap between scans (logs thinned to one scan
+  // a metre), so there is nothing to arbitrate.
+  double max_arbitration_gap_s = 0.5;
   // The prediction is fused with every accepted match, each weighted by its information, so a
   // scan that constrains the pose only partly (one trunk, one wall) keeps the prediction in the
   // directions it leaves open instead of sliding there. Standard deviations of the prediction:
@@ -63,6 +77,14 @@ struct TrackerOptions {
   double gyro_sigma_rad = 0.001;
   double gyro_sigma_rad_per_s = 0.0006;
   double gyro_sigma_rad_per_rad = 0.002;
+  // With a gyro, a pose whose heading is further from the gyro's since the anchor than this
+  // chi-squared (one degree of freedom, 99.9 %) allows is not taken from a match or the camera.
+  // The variance is the gyro's plus the match's floor: against a gyro's heading a match's
+  // covariance gets this floor (its Gauss-Newton information sees neither correlated echoes nor
+  // the map's error).
+  double max_gyro_chi2 = 10.83;
+  double match_sigma_floor_m = 0.005;
+  double match_sigma_floor_rad = 0.005;
   void Validate() const;
 };
 
@@ -111,10 +133,24 @@ class Tracker {
   TrackStep Track(std::size_t scan_index, const TrackInput& input);
   // After the pose graph moved the key frames: re-anchor the current pose and the buffer.
   void OnKeyFramesMoved(const PlanarPose& T_new_old_last_key_frame);
+  // Scans whose odometry step was not used: beyond the speed limits, or overruled by the laser.
   std::size_t odometry_rejected() const { return odometry_rejected_; }
+  // Scans where the laser chose between the odometry and the constant-velocity model because it
+  // did not confirm the one the limits picked.
+  std::size_t odometry_arbitrated() const { return odometry_arbitrated_; }
 
  private:
-  PlanarPose Predict(const TrackInput& input, bool* odometry_used);
+  // The pose predicted from the odometry if its step is within the speed limits, else by
+  // constant velocity; the other prediction as the alternative, where there is odometry.
+  struct Predictions {
+    PlanarPose primary;
+    std::optional<PlanarPose> alternative;
+    bool primary_is_odometry = false;
+  };
+  Predictions Predict(const TrackInput& input);
+  // True unless the gyro turned the odometry since the anchor and the pose's heading, known to
+  // sigma_rad, disagrees with it (max_gyro_chi2).
+  bool GyroAgrees(const TrackInput& input, const PlanarPose& T_world_base, double sigma_rad) const;
 
   TrackerOptions options_;
   KeyFrameMap* map_;
@@ -136,6 +172,7 @@ class Tracker {
   std::optional<Anchor> anchor_;
   double path_length_m_ = 0;
   std::size_t odometry_rejected_ = 0;
+  std::size_t odometry_arbitrated_ = 0;
 };
 
 }  // namespace littermap::reconstruct

@@ -140,5 +140,100 @@ TEST(Tracker, RoutineThreeRejectsAPoseNeitherTheLaserNorThePredictionConfirms) {
   EXPECT_NEAR(step.T_world_base.x_m, 0.2, 0.02);  // the odometry's step from the last pose
 }
 
+// Drives the room at 0.2 m per scan (0.1 s apart) along x with exact odometry but for what
+// `odometry_of` makes of it; returns the tracker's last step and its largest position error.
+struct Drive {
+  TrackStep last;
+  double largest_error_m = 0;
+  std::size_t arbitrated = 0;
+};
+template <typename OdometryOf>
+Drive DriveRoom(int scans, OdometryOf odometry_of, bool gyro = false) {
+  TrackerOptions options;
+  KeyFrameMap map(options.key_frames, options.icp);
+  Tracker tracker(options, &map);
+  Drive drive;
+  for (int i = 0; i < scans; ++i) {
+    const PlanarPose truth{1.0 + 0.2 * i, 0.5, 0};
+    TrackInput input{static_cast<TimestampNs>(i) * 100'000'000,
+                     testing::RoomPoints(truth),
+                     odometry_of(i, truth),
+                     {},
+                     gyro};
+    drive.last = tracker.Track(static_cast<std::size_t>(i), input);
+    drive.largest_error_m =
+        std::max(drive.largest_error_m, std::hypot(drive.last.T_world_base.x_m - truth.x_m + 1.0,
+                                                   drive.last.T_world_base.y_m - truth.y_m + 0.5));
+  }
+  drive.arbitrated = tracker.odometry_arbitrated();
+  return drive;
+}
+
+// The raw MIT CSAIL log's odometry stands still for a few scans while the robot drives on, then
+// catches up by a metre in one step. Matched from the odometry's jump the scan lands implausibly
+// far from it; matched from constant velocity it lands where the robot is, and that wins.
+TEST(Tracker, OdometryThatStallsAndCatchesUpIsOverruledByTheLaser) {
+  const Drive drive = DriveRoom(14, [](int i, const PlanarPose& truth) {
+    PlanarPose odometry = truth;
+    if (i >= 6 && i < 10) odometry.x_m = 1.0 + 0.2 * 5;  // stalled at scan 5
+    return odometry;
+  });
+  EXPECT_GE(drive.arbitrated, 1u);
+  EXPECT_LT(drive.largest_error_m, 0.05);
+}
+
+// Without the laser's say the same stall and jump would put the pose a metre ahead: the
+// constant-velocity guess is only taken where the laser confirms it.
+TEST(Tracker, OdometryTheLaserConfirmsIsKeptEvenWhenItDisagreesWithConstantVelocity) {
+  // The robot stops dead at scan 6: constant velocity overshoots, the odometry is right.
+  const Drive drive = DriveRoom(12, [](int i, const PlanarPose& truth) {
+    (void)i;
+    return truth;
+  });
+  EXPECT_EQ(drive.arbitrated, 0u);
+  EXPECT_LT(drive.largest_error_m, 0.05);
+}
+
+// Three scans in the room while the robot drives straight, then one from a robot turned
+// 6 degrees (a wrong match in a park's few trunks would look like this) while the odometry says
+// it did not turn, its heading a gyro's or the wheels'.
+TrackStep TrackIntoUnturnedOdometry(bool gyro) {
+  TrackerOptions options;
+  KeyFrameMap map(options.key_frames, options.icp);
+  Tracker tracker(options, &map);
+  for (int i = 0; i < 3; ++i) {
+    const PlanarPose pose{1.0 + 0.1 * i, 0.5, 0};
+    tracker.Track(
+        static_cast<std::size_t>(i),
+        {static_cast<TimestampNs>(i) * 100'000'000, testing::RoomPoints(pose), pose, {}, gyro});
+  }
+  const PlanarPose turned{1.3, 0.5, 6 * std::numbers::pi / 180};
+  return tracker.Track(
+      3, {300'000'000, testing::RoomPoints(turned), PlanarPose{1.3, 0.5, 0}, {}, gyro});
+}
+
+TEST(Tracker, AMatchThatDisagreesWithTheGyroIsNotTaken) {
+  const TrackStep step = TrackIntoUnturnedOdometry(true);
+  EXPECT_NE(step.routine, Routine::kGlobal);
+  EXPECT_NEAR(step.T_world_base.theta_rad, 0, 0.002);  // the gyro's, not the match's 0.1 rad
+  // With wheels alone the laser is believed (they may have slipped).
+  const TrackStep believed = TrackIntoUnturnedOdometry(false);
+  EXPECT_EQ(believed.routine, Routine::kGlobal);
+  EXPECT_NEAR(believed.T_world_base.theta_rad, 6 * std::numbers::pi / 180, 0.01);
+}
+
+// Wheels that turned 15 degrees too far in one step: a match that overlays the room's walls
+// almost perfectly takes the heading back, beyond the usual 7-degree correction limit.
+TEST(Tracker, AWellOverlaidMatchCorrectsAHeadingGlitchOfTheWheels) {
+  const double glitch_rad = 15 * std::numbers::pi / 180;
+  const Drive drive = DriveRoom(10, [&](int i, const PlanarPose& truth) {
+    PlanarPose odometry = truth;
+    if (i >= 5) odometry.theta_rad += glitch_rad;  // the wheels' heading is off from scan 5 on
+    return odometry;
+  });
+  EXPECT_NEAR(drive.last.T_world_base.theta_rad, 0, 0.01);
+  EXPECT_LT(drive.largest_error_m, 0.05);
+}
+
 }  // namespace
 }  // namespace littermap::reconstruct
