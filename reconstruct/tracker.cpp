@@ -29,8 +29,6 @@ bool Plausible(const TrackerOptions& options, const PlanarPose& from, const Plan
          std::abs(correction.theta_rad) <= max_turn_rad + fraction * std::abs(motion.theta_rad);
 }
 
-// The pose that best agrees with a match and the prediction, each weighted by its information
-// (x, y, theta in the world frame, as the matcher's), and the information of that pose.
 // The match's information with a floor under its covariance: Gauss-Newton's information counts
 // every echo as an independent measurement and sees neither correlated echoes nor the map's own
 // error. Against wheels that hardly matters; against a gyro's heading, far more precise than any
@@ -46,7 +44,9 @@ Eigen::Matrix3d FlooredInformation(const Eigen::Matrix3d& information, double fl
   return (covariance + floor).ldlt().solve(Eigen::Matrix3d::Identity());
 }
 
-// With gyro_heading, the prediction's heading is a gyro's and the match's information is floored
+// The pose that best agrees with a match and the prediction, each weighted by its information
+// (x, y, theta in the world frame, as the matcher's), and the information of that pose. With
+// gyro_heading, the prediction's heading is a gyro's and the match's information is floored
 // (FlooredInformation).
 void FuseWithPrediction(const PlanarPose& predicted, const Eigen::Matrix3d& prediction_information,
                         bool gyro_heading, const TrackerOptions& options, TrackStep* step) {
@@ -108,7 +108,7 @@ void TrackerOptions::Validate() const {
   if (!(max_arbitration_disagreement_m > 0) || !(max_arbitration_disagreement_rad > 0) ||
       !(min_arbitration_ratio_gain >= 0) || !(max_arbitration_gap_s >= 0)) {
     throw UsageError(
-        "tracker: the arbitration disagreement limits must be > 0, its ratio gain >= 0");
+        "tracker: the arbitration disagreement limits must be > 0, its ratio gain and gap >= 0");
   }
   if (!(max_odometry_speed_m_s > 0) || !(max_odometry_turn_rate_rad_s > 0) ||
       !(max_scan_gap_s > 0)) {
@@ -197,9 +197,8 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
       IcpResult other =
           MatchIcp(input.points_base, map_->LocalTarget(), *predictions.alternative, options_.icp);
       // The other start must overlay clearly more of the scan, or lead the matcher to the same
-      // pose (a
-      // scan that pins the pose down has one basin, whereas along a corridor each start slides
-      // to a place of its own, overlaying about as much).
+      // pose: a scan that pins the pose down has one basin, whereas along a corridor each start
+      // slides to a place of its own, overlaying about as much.
       const PlanarPose apart = Between(global.T_target_source, other.T_target_source);
       const bool same_pose =
           global.converged &&
