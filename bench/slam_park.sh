@@ -4,7 +4,9 @@
 # laser + RGB-D tracker and with the laser alone, pinned to one core. Prints one row per run x
 # mode: scans, run time, scans/s, peak resident memory of the whole process, ATE and RPE against
 # the truth, and map_vs_truth: the 5 cm cells the scans occupy when drawn with the trajectory,
-# over those with the true poses (`littermap eval map`).
+# over those with the true poses (`littermap eval map`). Runs longer than a few minutes
+# (park_large) also get a per-minute table (bench/trajectory_minutes.py): error percentiles and
+# distance ratio against time, so a bounded drift shows apart from a growing one.
 #   bench/slam_park.sh [LITTERMAP] [WORK_DIR] [RUN...]
 # RUN is a world (park_small, park_large, ...) as shipped, or WORLD:SEED for the same world and
 # route with another draw of sensor noise, odometry drift and timing (`simulate --run-seed`).
@@ -66,6 +68,8 @@ for run_name in "${run_names[@]}"; do
     "$littermap" -q eval map "$bag" "$run/trajectory.tum" "$truth/trajectory.tum" --json \
       >"$run/map_eval.json"
     map_vs_truth=$(cells_ratio "$run/map_eval.json")
+    python3 "$here/bench/trajectory_minutes.py" "$run/trajectory.tum" "$truth/trajectory.tum" \
+      "$run/odometry.tum" >"$run/minutes.txt"
     ate_m=$(field "$run/eval.json" ate_rmse_m)
     printf '%s\t%s\t%s\n' "$world" "$mode" "$ate_m" >>"$rows"
     printf '%-14s %-7s %7s %8s %8s %8s %8s %8s %6s %12s\n' "$run_name" "$mode" \
@@ -73,6 +77,16 @@ for run_name in "${run_names[@]}"; do
       "$(field "$run/quality.json" scans_per_s %.0f)" "$(field "$run.time.json" peak_mib %.0f)" \
       "$(printf %.3f "$ate_m")" "$(field "$run/eval.json" rpe_trans_mean_m %.3f)" \
       "$(field "$run/quality.json" loop_closures_accepted %d)" "$map_vs_truth"
+  done
+done
+# Drift against time for the long runs: error percentiles and distance ratio minute by minute.
+for run_name in "${run_names[@]}"; do
+  for mode in hybrid laser; do
+    minutes=$work/$run_name/run-$mode/minutes.txt
+    if [[ $(wc -l <"$minutes") -gt 8 ]]; then
+      printf '\n%s %s, per minute:\n' "$run_name" "$mode"
+      cat "$minutes"
+    fi
   done
 done
 # The spread of each world and mode over its runs (draws).
