@@ -25,21 +25,33 @@ MovingEchoFilter::MovingEchoFilter(const MovingEchoFilterOptions& options) : opt
   options_.Validate();
 }
 
-MovingEchoResult MovingEchoFilter::Filter(TimestampNs stamp_ns, const PlanarPose& T_odom_base,
-                                          Points2 points_base) {
-  // The newest scan at least min_interval_s older; older ones are no longer needed.
+MovingEchoFilter::Earlier* MovingEchoFilter::Reference(TimestampNs stamp_ns) {
   while (earlier_.size() >= 2 &&
          ToSeconds(stamp_ns - earlier_[1].stamp_ns) >= options_.min_interval_s) {
     earlier_.pop_front();
   }
-  const Earlier* reference = !earlier_.empty() && ToSeconds(stamp_ns - earlier_.front().stamp_ns) >=
-                                                      options_.min_interval_s
-                                 ? &earlier_.front()
-                                 : nullptr;
+  return !earlier_.empty() &&
+                 ToSeconds(stamp_ns - earlier_.front().stamp_ns) >= options_.min_interval_s
+             ? &earlier_.front()
+             : nullptr;
+}
+
+void MovingEchoFilter::Remember(TimestampNs stamp_ns, const PlanarPose& T_odom_base,
+                                Points2 points_base) {
+  Reference(stamp_ns);  // drops the scans no later one will compare with
+  earlier_.push_back({stamp_ns, T_odom_base, std::move(points_base), nullptr});
+}
+
+MovingEchoResult MovingEchoFilter::Filter(TimestampNs stamp_ns, const PlanarPose& T_odom_base,
+                                          Points2 points_base) {
+  Earlier* reference = Reference(stamp_ns);
   MovingEchoResult result;
   if (reference == nullptr) {
     result.points_base = points_base;
   } else {
+    if (!reference->echoes) {
+      reference->echoes = std::make_shared<const IcpTarget>(reference->points_base, Points2{});
+    }
     const PlanarPose T_earlier_now = Between(reference->T_odom_base, T_odom_base);
     const double max_sq = options_.max_shift_m * options_.max_shift_m;
     result.points_base.reserve(points_base.size());
@@ -62,8 +74,7 @@ MovingEchoResult MovingEchoFilter::Filter(TimestampNs stamp_ns, const PlanarPose
       result.given_up = true;
     }
   }
-  earlier_.push_back({stamp_ns, T_odom_base,
-                      std::make_shared<const IcpTarget>(std::move(points_base), Points2{})});
+  earlier_.push_back({stamp_ns, T_odom_base, std::move(points_base), nullptr});
   return result;
 }
 

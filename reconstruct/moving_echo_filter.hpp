@@ -56,13 +56,19 @@ class MovingEchoFilter {
   // points_base: the scan's (downsampled) echoes; T_odom_base: the odometry at its stamp.
   // Scans must come in time order; the first ones, with no scan min_interval_s older, pass.
   MovingEchoResult Filter(TimestampNs stamp_ns, const PlanarPose& T_odom_base, Points2 points_base);
+  // Keeps a scan for the comparisons of later ones without filtering it (where the terrain does
+  // not call for the filter): the same history as Filter, none of the per-echo searches.
+  void Remember(TimestampNs stamp_ns, const PlanarPose& T_odom_base, Points2 points_base);
 
  private:
   struct Earlier {
     TimestampNs stamp_ns = 0;
     PlanarPose T_odom_base;
-    std::shared_ptr<const IcpTarget> echoes;  // KD-tree over the scan's points
+    Points2 points_base;
+    std::shared_ptr<const IcpTarget> echoes;  // KD-tree over the points, built when first needed
   };
+  // The newest kept scan at least min_interval_s older than stamp_ns, if any; older ones go.
+  Earlier* Reference(TimestampNs stamp_ns);
   MovingEchoFilterOptions options_;
   std::deque<Earlier> earlier_;
 };

@@ -85,9 +85,11 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdomet
     if (mode != MovingEchoMode::kOff && tilt && odometry && odometry->heading_from_gyro) {
       // Every scan is kept for comparison; its echoes are filtered where the terrain calls for it.
       const double relief_m = terrain_relief_.Add(odometry->T_odom_base, odometry->z_m);
-      MovingEchoResult still =
-          moving_echoes_.Filter(scan.stamp_ns, odometry->T_odom_base, input.points_base);
-      if (mode == MovingEchoMode::kOn || relief_m > options_.moving_echoes.min_relief_m) {
+      if (mode != MovingEchoMode::kOn && relief_m <= options_.moving_echoes.min_relief_m) {
+        moving_echoes_.Remember(scan.stamp_ns, odometry->T_odom_base, input.points_base);
+      } else {
+        MovingEchoResult still =
+            moving_echoes_.Filter(scan.stamp_ns, odometry->T_odom_base, input.points_base);
         ++quality_.scans_moving_echo_filtered;
         quality_.moving_echoes += still.moving;
         if (still.given_up) ++quality_.scans_moving_echoes;  // tracked like a scan without echoes
