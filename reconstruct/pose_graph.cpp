@@ -18,15 +18,18 @@
 namespace littermap::reconstruct {
 
 void PoseGraphOptions::Validate() const {
-  if (!(loop_loss_scale > 0)) throw UsageError("pose graph: loop_loss_scale must be > 0");
+  if (!(loop_loss_scale > 0) || !(landmark_loss_scale > 0)) {
+    throw UsageError("pose graph: loop_loss_scale and landmark_loss_scale must be > 0");
+  }
   if (max_iterations < 1) throw UsageError("pose graph: max_iterations must be >= 1");
 }
 
 PoseGraphResult OptimizePoseGraph(std::vector<PlanarPose>* poses,
                                   const std::vector<PoseGraphEdge>& edges,
-                                  const PoseGraphOptions& options) {
+                                  const PoseGraphOptions& options, LandmarkTerms* landmarks) {
   PoseGraphResult result;
-  if (poses->size() < 2 || edges.empty()) {
+  const bool with_landmarks = landmarks != nullptr && !landmarks->terms.empty();
+  if (poses->size() < 2 || (edges.empty() && !with_landmarks)) {
     result.usable = true;
     return result;
   }
@@ -44,6 +47,21 @@ PoseGraphResult OptimizePoseGraph(std::vector<PlanarPose>* poses,
     problem.AddResidualBlock(RelativePoseError::Create(edge.T_from_to, edge.information), loss,
                              parameters[edge.from].data(), parameters[edge.to].data());
   }
+  std::vector<std::array<double, 2>> positions;
+  if (with_landmarks) {
+    positions.resize(landmarks->positions.size());
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+      positions[i] = {landmarks->positions[i].x(), landmarks->positions[i].y()};
+    }
+    for (const LandmarkTerm& term : landmarks->terms) {
+      if (term.pose >= poses->size() || term.landmark >= positions.size()) {
+        throw InternalError("pose graph: a landmark term names a missing pose or landmark");
+      }
+      problem.AddResidualBlock(RangeBearingError::Create(term.centre_base, term.covariance_base),
+                               new ceres::HuberLoss(options.landmark_loss_scale),
+                               parameters[term.pose].data(), positions[term.landmark].data());
+    }
+  }
   if (problem.HasParameterBlock(parameters[0].data())) {
     problem.SetParameterBlockConstant(parameters[0].data());
   }
@@ -56,8 +74,18 @@ PoseGraphResult OptimizePoseGraph(std::vector<PlanarPose>* poses,
     for (std::size_t i = 0; i < poses->size(); ++i) {
       (*poses)[i] = {parameters[i][0], parameters[i][1], WrapAngle(parameters[i][2])};
     }
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+      landmarks->positions[i] = {positions[i][0], positions[i][1]};
+    }
   }
   return result;
+}
+
+double LandmarkChi2(const PlanarPose& pose, const Eigen::Vector2d& position,
+                    const LandmarkTerm& term) {
+  const double a[3] = {pose.x_m, pose.y_m, pose.theta_rad};
+  const double l[2] = {position.x(), position.y()};
+  return RangeBearingError(term.centre_base, term.covariance_base).Chi2(a, l);
 }
 
 Eigen::Matrix3d DiagonalInformation(double sigma_m, double sigma_rad) {
@@ -122,7 +150,8 @@ double EdgeChi2(const std::vector<PlanarPose>& poses, const PoseGraphEdge& edge)
 }
 
 LoopPruning PruneLoops(std::vector<PlanarPose>* poses, std::vector<PoseGraphEdge>* edges,
-                       double max_chi2, const PoseGraphOptions& options) {
+                       double max_chi2, const PoseGraphOptions& options,
+                       LandmarkTerms* landmarks) {
   LoopPruning pruning;
   for (;;) {
     std::optional<std::size_t> worst;
@@ -139,11 +168,15 @@ LoopPruning PruneLoops(std::vector<PlanarPose>* poses, std::vector<PoseGraphEdge
     edges->erase(edges->begin() + static_cast<std::ptrdiff_t>(*worst));
     ++pruning.removed;
     std::vector<PlanarPose> optimised = *poses;
-    const PoseGraphResult result = OptimizePoseGraph(&optimised, *edges, options);
+    std::optional<LandmarkTerms> moved;
+    if (landmarks != nullptr) moved = *landmarks;
+    const PoseGraphResult result =
+        OptimizePoseGraph(&optimised, *edges, options, moved ? &*moved : nullptr);
     pruning.usable = result.usable;
     if (!result.usable) return pruning;
     pruning.final_cost = result.final_cost;
     *poses = std::move(optimised);
+    if (moved) *landmarks = std::move(*moved);
   }
 }
 

@@ -23,8 +23,23 @@ struct PoseGraphEdge {
   bool loop = false;
 };
 
+// Landmarks in the graph: 2D points, each sighting a range-bearing factor from its pose
+// (RangeBearingError) with a robust loss, so a wrong association pulls with a bounded force.
+struct LandmarkTerm {
+  std::size_t pose = 0;
+  std::size_t landmark = 0;  // index into LandmarkTerms::positions
+  Eigen::Vector2d centre_base = Eigen::Vector2d::Zero();
+  Eigen::Matrix2d covariance_base = Eigen::Matrix2d::Identity();
+};
+
+struct LandmarkTerms {
+  std::vector<Eigen::Vector2d> positions;  // world frame, optimised in place
+  std::vector<LandmarkTerm> terms;
+};
+
 struct PoseGraphOptions {
-  double loop_loss_scale = 3.0;  // Huber scale on the whitened loop residual
+  double loop_loss_scale = 3.0;      // Huber scale on the whitened loop residual
+  double landmark_loss_scale = 2.0;  // Huber scale on the whitened landmark residual
   int max_iterations = 50;
   void Validate() const;
 };
@@ -36,10 +51,15 @@ struct PoseGraphResult {
   double final_cost = 0;
 };
 
-// Optimises poses in place.
+// Optimises poses (and the landmarks' positions, if given) in place.
 PoseGraphResult OptimizePoseGraph(std::vector<PlanarPose>* poses,
                                   const std::vector<PoseGraphEdge>& edges,
-                                  const PoseGraphOptions& options);
+                                  const PoseGraphOptions& options,
+                                  LandmarkTerms* landmarks = nullptr);
+
+// Chi-squared (2 degrees of freedom) of one landmark sighting at the given values.
+double LandmarkChi2(const PlanarPose& pose, const Eigen::Vector2d& position,
+                    const LandmarkTerm& term);
 
 // Information of independent errors with these standard deviations in x and y and in theta.
 Eigen::Matrix3d DiagonalInformation(double sigma_m, double sigma_rad);
@@ -73,6 +93,7 @@ struct LoopPruning {
 // were added, and the graph then bends to fit them; once the loops found later pull the other
 // way, the wrong ones stand out. Poses are updated only while the solutions are usable.
 LoopPruning PruneLoops(std::vector<PlanarPose>* poses, std::vector<PoseGraphEdge>* edges,
-                       double max_chi2, const PoseGraphOptions& options);
+                       double max_chi2, const PoseGraphOptions& options,
+                       LandmarkTerms* landmarks = nullptr);
 
 }  // namespace littermap::reconstruct

@@ -27,6 +27,14 @@ void SlamOptions::Validate() const {
   graph.Validate();
   grid.Validate();
   alignment.Validate();
+  landmark_extraction.Validate();
+  landmark_map.Validate();
+  if (!(landmark_loop_search_every_m > 0) || !(max_landmark_loop_chi2 > 0) ||
+      landmark_optimise_every_key_frames < 1) {
+    throw UsageError(
+        "slam: landmark_loop_search_every_m and max_landmark_loop_chi2 must be > 0, "
+        "landmark_optimise_every_key_frames >= 1");
+  }
   // Map points are kept in centimetres in 16 bits (SlamPipeline::MapPoint).
   if (!(map_max_range_m > 0) || map_max_range_m > 300) {
     throw UsageError("slam: map_max_range_m must be in (0, 300]");
@@ -51,6 +59,7 @@ SlamPipeline::SlamPipeline(const SlamOptions& options, const PlanarPose& T_base_
       map_(options.tracker.key_frames, options.tracker.icp),
       tracker_(options.tracker, &map_, rgbd),
       loop_closer_(options.loops),
+      landmark_map_(options.landmark_map),
       moving_echoes_(options.moving_echoes),
       terrain_relief_(options.moving_echoes.relief_window_m),
       grid_(options.grid) {}
@@ -78,6 +87,8 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdomet
   input.heading_from_gyro = odometry && odometry->heading_from_gyro;
   input.tilt = tilt;
   Points2 map_points_base = std::move(points.points_base);
+  // Every echo in beam order, for the landmarks of a key frame.
+  const Points2 echoes_base = options_.landmarks ? map_points_base : Points2{};
   if (points.valid_beams >= options_.min_scan_points) {
     input.points_base = VoxelDownsample(map_points_base, options_.scan_voxel_size_m);
     // Wheels alone can slip by degrees in a quarter of a second: only a gyro's heading will do.
@@ -124,9 +135,21 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdomet
   }
   scans_.push_back(record);
   StoreMapPoints(map_points_base);
-  if (step.new_key_frame && step.key_frame > 0) {
-    AddGraphEdge(step);
-    if (options_.loop_closure) CloseLoops(step.key_frame);
+  if (step.new_key_frame) {
+    if (step.key_frame > 0) AddGraphEdge(step);
+    if (options_.landmarks) {
+      const KeyFrame& frame = map_.key_frames()[step.key_frame];
+      const std::vector<LandmarkObservation> circles = ExtractLandmarks(
+          echoes_base, {T_base_laser_.x_m, T_base_laser_.y_m}, scan.angle_increment_rad,
+          options_.landmark_extraction);
+      quality_.landmark_sightings += circles.size();
+      quality_.landmark_associations += landmark_map_.AddKeyFrame(
+          step.key_frame, frame.T_world_base, frame.path_length_m, circles);
+    }
+    if (options_.loop_closure && step.key_frame > 0) {
+      CloseLoops(step.key_frame);
+      if (options_.landmarks) CloseLandmarkLoops(step.key_frame);
+    }
   }
 }
 
@@ -165,8 +188,8 @@ void SlamPipeline::CloseLoops(std::size_t key_frame) {
   const double path_m = map_.key_frames()[key_frame].path_length_m;
   const bool wide = path_m - last_wide_search_path_m_ >= options_.wide_loop_search_every_m;
   if (wide) last_wide_search_path_m_ = path_m;
-  const LoopAttempt attempt = loop_closer_.TryClose(
-      map_, key_frame, GraphDistances(map_.key_frames().size(), edges_, key_frame), wide);
+  const LoopAttempt attempt =
+      loop_closer_.TryClose(map_, key_frame, GraphDistancesFrom(key_frame), wide);
   switch (attempt.verdict) {
     case LoopVerdict::kNoCandidate:
       return;
@@ -193,10 +216,123 @@ void SlamPipeline::CloseLoops(std::size_t key_frame) {
   Optimise();
 }
 
+std::vector<double> SlamPipeline::GraphDistancesFrom(std::size_t key_frame) const {
+  if (landmark_links_.empty()) {
+    return GraphDistances(map_.key_frames().size(), edges_, key_frame);
+  }
+  std::vector<PoseGraphEdge> all = edges_;
+  all.insert(all.end(), landmark_links_.begin(), landmark_links_.end());
+  return GraphDistances(map_.key_frames().size(), all, key_frame);
+}
+
+LandmarkTerms SlamPipeline::BuildLandmarkTerms(std::vector<std::size_t>* landmark_of_term) const {
+  LandmarkTerms terms;
+  // Until landmarks close a loop, their sightings repeat what the scan matches between nearby key
+  // frames already hold (the same echoes, counted twice); indoors, where a few bins and pillars
+  // are the only round things, that double count moved the trajectories at random.
+  if (landmark_links_.empty() && !pending_landmark_loop_) return terms;
+  const std::vector<Landmark>& landmarks = landmark_map_.landmarks();
+  std::vector<std::size_t> compact(landmarks.size(), landmarks.size());
+  for (std::size_t i = 0; i < landmarks.size(); ++i) {
+    if (landmarks[i].merged ||
+        landmarks[i].observations < options_.landmark_map.min_graph_observations) {
+      continue;
+    }
+    compact[i] = terms.positions.size();
+    terms.positions.push_back(landmarks[i].position_world);
+  }
+  for (const LandmarkSighting& s : landmark_map_.sightings()) {
+    if (compact[s.landmark] == landmarks.size()) continue;
+    terms.terms.push_back({s.key_frame, compact[s.landmark], s.observation.centre_base,
+                           s.observation.covariance_base});
+    if (landmark_of_term != nullptr) landmark_of_term->push_back(s.landmark);
+  }
+  return terms;
+}
+
+void SlamPipeline::ApplyPoses(const std::vector<PlanarPose>& poses) {
+  const PlanarPose T_new_old = Compose(poses.back(), Inverse(map_.key_frames().back().T_world_base));
+  map_.SetPoses(poses);
+  tracker_.OnKeyFramesMoved(T_new_old);
+  landmark_map_.UpdatePositions(poses);
+}
+
+void SlamPipeline::CloseLandmarkLoops(std::size_t key_frame) {
+  const KeyFrame& frame = map_.key_frames()[key_frame];
+  if (frame.path_length_m - last_landmark_search_path_m_ < options_.landmark_loop_search_every_m) {
+    // Between searches, sightings of old landmarks still pull the graph now and then.
+    if (landmark_links_.empty() ||
+        key_frame < last_landmark_optimised_key_frame_ +
+                        options_.landmark_optimise_every_key_frames) {
+      return;
+    }
+    last_landmark_optimised_key_frame_ = key_frame;
+    std::vector<PlanarPose> poses = map_.Poses();
+    LandmarkTerms terms = BuildLandmarkTerms();
+    const PoseGraphResult result = OptimizePoseGraph(&poses, edges_, options_.graph, &terms);
+    ++quality_.optimisations;
+    if (result.usable) {
+      quality_.final_cost = result.final_cost;
+      ApplyPoses(poses);
+    }
+    return;
+  }
+  last_landmark_search_path_m_ = frame.path_length_m;
+  const std::optional<LandmarkLoop> loop = landmark_map_.FindLoop(
+      frame.T_world_base, frame.path_length_m, GraphDistancesFrom(key_frame));
+  if (!loop) return;
+  ++quality_.landmark_loops_found;
+  // The old key frame the link goes to: where the matched old landmarks were last seen.
+  std::size_t old_key_frame = key_frame;
+  for (const auto& [local, old] : loop->matches) {
+    old_key_frame = std::min(old_key_frame, landmark_map_.landmarks()[old].last_key_frame);
+  }
+  const LandmarkMap before = landmark_map_;
+  landmark_map_.Merge(*loop);
+  std::vector<PlanarPose> poses = map_.Poses();
+  std::vector<std::size_t> landmark_of_term;
+  pending_landmark_loop_ = true;
+  LandmarkTerms terms = BuildLandmarkTerms(&landmark_of_term);
+  pending_landmark_loop_ = false;
+  const PoseGraphResult result = OptimizePoseGraph(&poses, edges_, options_.graph, &terms);
+  ++quality_.optimisations;
+  // Verification: the merged landmarks' sightings must fit the optimised graph.
+  double chi2_sum = 0;
+  std::size_t chi2_count = 0;
+  if (result.usable) {
+    std::vector<bool> merged(landmark_map_.landmarks().size(), false);
+    for (const auto& [local, old] : loop->matches) merged[old] = true;
+    for (std::size_t t = 0; t < terms.terms.size(); ++t) {
+      if (!merged[landmark_of_term[t]]) continue;
+      const LandmarkTerm& term = terms.terms[t];
+      chi2_sum += LandmarkChi2(poses[term.pose], terms.positions[term.landmark], term);
+      ++chi2_count;
+    }
+  }
+  if (!result.usable || chi2_count == 0 ||
+      chi2_sum / static_cast<double>(chi2_count) > options_.max_landmark_loop_chi2) {
+    landmark_map_ = before;
+    ++quality_.landmark_loops_rejected;
+    return;
+  }
+  ++quality_.landmark_loops_accepted;
+  quality_.final_cost = result.final_cost;
+  PoseGraphEdge link;
+  link.from = old_key_frame;
+  link.to = key_frame;
+  link.T_from_to = Between(poses[old_key_frame], poses[key_frame]);
+  link.information.setZero();
+  link.loop = true;
+  landmark_links_.push_back(link);
+  last_landmark_optimised_key_frame_ = key_frame;
+  ApplyPoses(poses);
+}
+
 void SlamPipeline::Optimise() {
   const std::vector<PlanarPose> before = map_.Poses();
   std::vector<PlanarPose> poses = before;
-  PoseGraphResult result = OptimizePoseGraph(&poses, edges_, options_.graph);
+  LandmarkTerms terms = BuildLandmarkTerms();
+  PoseGraphResult result = OptimizePoseGraph(&poses, edges_, options_.graph, &terms);
   ++quality_.optimisations;
   // Consistency after optimisation: a loop the graph cannot satisfy is taken out again, and the
   // graph optimised without it (false loops must not stay in).
@@ -215,19 +351,19 @@ void SlamPipeline::Optimise() {
   if (removed) {
     std::erase_if(edges_, [](const PoseGraphEdge& e) { return e.information.isZero(); });
     poses = before;
-    result = OptimizePoseGraph(&poses, edges_, options_.graph);
+    terms = BuildLandmarkTerms();
+    result = OptimizePoseGraph(&poses, edges_, options_.graph, &terms);
     ++quality_.optimisations;
   }
   if (!result.usable) return;
   quality_.final_cost = result.final_cost;
-  const PlanarPose T_new_old = Compose(poses.back(), Inverse(before.back()));
-  map_.SetPoses(poses);
-  tracker_.OnKeyFramesMoved(T_new_old);
+  ApplyPoses(poses);
 }
 
 void SlamPipeline::Finish() {
-  if (!unchecked_loops_.empty()) Optimise();
+  if (!unchecked_loops_.empty() || !landmark_links_.empty()) Optimise();
   PruneFinalLoops();
+  quality_.landmarks = landmark_map_.graph_landmarks();
   if (options_.alignment_mode == AlignmentMode::kOn ||
       (options_.alignment_mode == AlignmentMode::kAuto && !tilted_)) {
     AlignKeyFrames();
@@ -268,15 +404,16 @@ void SlamPipeline::Finish() {
 
 void SlamPipeline::PruneFinalLoops() {
   std::vector<PlanarPose> poses = map_.Poses();
+  LandmarkTerms terms = BuildLandmarkTerms();
   const LoopPruning pruning =
-      PruneLoops(&poses, &edges_, options_.max_final_loop_chi2, options_.graph);
+      PruneLoops(&poses, &edges_, options_.max_final_loop_chi2, options_.graph, &terms);
   if (pruning.removed == 0) return;
   // Edges removed before an unusable solution stay removed; the poses are the last usable ones.
   quality_.loops_accepted -= pruning.removed;
   quality_.loops_rejected_after_optimisation += pruning.removed;
   quality_.optimisations += pruning.removed;
   if (pruning.usable) quality_.final_cost = pruning.final_cost;
-  map_.SetPoses(poses);
+  ApplyPoses(poses);
 }
 
 std::vector<PoseGraphEdge> SlamPipeline::KeyFrameOdometry() const {

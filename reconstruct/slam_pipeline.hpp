@@ -15,6 +15,8 @@
 #include "core/planar_pose.hpp"
 #include "core/time.hpp"
 #include "reconstruct/gyro_odometry.hpp"
+#include "reconstruct/landmark_extraction.hpp"
+#include "reconstruct/landmark_map.hpp"
 #include "reconstruct/loop_closer.hpp"
 #include "reconstruct/moving_echo_filter.hpp"
 #include "reconstruct/occupancy_grid.hpp"
@@ -49,6 +51,17 @@ struct SlamOptions {
   double odometry_sigma_rad = 0.05;
   bool loop_closure = true;
   std::size_t loop_cooldown_key_frames = 3;  // after an accepted loop
+  // Landmarks (round obstacles) in the pose graph and loops closed on their constellations.
+  bool landmarks = true;
+  LandmarkExtractionOptions landmark_extraction;
+  LandmarkMapOptions landmark_map;
+  double landmark_loop_search_every_m = 2;  // path between two constellation searches
+  // After a constellation merge and optimisation, the merged landmarks' sightings must fit: their
+  // mean chi-squared (2 degrees of freedom, 2 expected) at most this.
+  double max_landmark_loop_chi2 = 6;
+  // Once landmarks closed a loop, the graph is optimised this often (key frames) so the sightings
+  // of old landmarks keep holding the trajectory between loops.
+  std::size_t landmark_optimise_every_key_frames = 10;
   double wide_loop_search_every_m = 8;       // path between two wide loop searches
   // An optimised loop edge further than this from its measurement did not fit the graph.
   double max_loop_residual_m = 0.2;
@@ -97,6 +110,14 @@ struct SlamQuality {
   std::size_t loops_rejected_after_optimisation = 0;
   std::size_t optimisations = 0;
   double final_cost = 0;
+  // Landmarks: in the graph (two sightings or more), sightings, sightings associated by tracking,
+  // and loops closed on their constellations.
+  std::size_t landmarks = 0;
+  std::size_t landmark_sightings = 0;
+  std::size_t landmark_associations = 0;
+  std::size_t landmark_loops_found = 0;
+  std::size_t landmark_loops_accepted = 0;
+  std::size_t landmark_loops_rejected = 0;  // after optimisation: the merged sightings did not fit
   ScanAlignmentResult alignment;  // the final scan alignment, if it ran
 };
 
@@ -120,6 +141,15 @@ class SlamPipeline {
  private:
   void AddGraphEdge(const TrackStep& step);
   void CloseLoops(std::size_t key_frame);
+  // Place recognition on the landmarks' constellation (LandmarkMap::FindLoop), verified by the
+  // optimised graph.
+  void CloseLandmarkLoops(std::size_t key_frame);
+  // Graph distances from a key frame over the pose graph's edges and the landmark loops.
+  std::vector<double> GraphDistancesFrom(std::size_t key_frame) const;
+  // The landmarks in the graph as Ceres terms, and the landmark each term's index maps from.
+  LandmarkTerms BuildLandmarkTerms(std::vector<std::size_t>* landmark_of_term = nullptr) const;
+  // Takes optimised key-frame poses: the map, the tracker and the landmarks follow.
+  void ApplyPoses(const std::vector<PlanarPose>& poses);
   void Optimise();
   // Keeps a scan's echoes for the final map (map_points_base_).
   void StoreMapPoints(const Points2& points_base);
@@ -138,6 +168,13 @@ class SlamPipeline {
   KeyFrameMap map_;
   Tracker tracker_;
   LoopCloser loop_closer_;
+  LandmarkMap landmark_map_;
+  // Links from a key frame to the one whose landmarks it recognised (for graph distances only:
+  // the landmark terms carry the constraint).
+  std::vector<PoseGraphEdge> landmark_links_;
+  bool pending_landmark_loop_ = false;  // a landmark loop under verification
+  double last_landmark_search_path_m_ = 0;
+  std::size_t last_landmark_optimised_key_frame_ = 0;
   MovingEchoFilter moving_echoes_;
   TerrainRelief terrain_relief_;
   OccupancyGrid grid_;

@@ -102,8 +102,8 @@ void TrackerOptions::Validate() const {
         "tracker: min_ratio_large_turn_correction must be in (0, 1] and "
         "max_large_turn_correction_rad >= max_correction_rad");
   }
-  if (!(max_gyro_chi2 > 0) || !(match_sigma_floor_m > 0) || !(match_sigma_floor_rad > 0)) {
-    throw UsageError("tracker: max_gyro_chi2 and the match sigma floors must be > 0");
+  if (!(max_gyro_chi2 > 0) || !(max_odometry_chi2 > 0) || !(match_sigma_floor_m > 0) || !(match_sigma_floor_rad > 0)) {
+    throw UsageError("tracker: max_gyro_chi2, max_odometry_chi2 and the match sigma floors must be > 0");
   }
   if (!(max_arbitration_disagreement_m > 0) || !(max_arbitration_disagreement_rad > 0) ||
       !(min_arbitration_ratio_gain >= 0) || !(max_arbitration_gap_s >= 0)) {
@@ -180,14 +180,18 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
     const Predictions predictions = Predict(input);
     PlanarPose predicted = predictions.primary;
     step.odometry_used = predictions.primary_is_odometry;
-    const auto accepted = [&](const IcpResult& match, const PlanarPose& from) {
+    // from_odometry: the match started from the odometry's prediction, which it must then agree
+    // with (OdometryAgrees); the laser's arbitration against broken odometry starts elsewhere.
+    const auto accepted = [&](const IcpResult& match, const PlanarPose& from, bool from_odometry) {
       return match.converged && match.inlier_ratio >= options_.min_matching_ratio &&
              Plausible(options_, pose_, from, match.T_target_source, match.inlier_ratio) &&
-             GyroAgrees(input, match.T_target_source, options_.match_sigma_floor_rad);
+             GyroAgrees(input, match.T_target_source, options_.match_sigma_floor_rad) &&
+             (!from_odometry ||
+              OdometryAgrees(input, match.T_target_source, options_.match_sigma_floor_m));
     };
     IcpResult global = MatchIcp(input.points_base, map_->LocalTarget(), predicted, options_.icp);
     step.matching_ratio = global.inlier_ratio;
-    if (!accepted(global, predicted) && predictions.alternative &&
+    if (!accepted(global, predicted, step.odometry_used) && predictions.alternative &&
         dt <= options_.max_arbitration_gap_s &&
         !Plausible(options_, pose_, predicted, *predictions.alternative)) {
       // The odometry and the constant-velocity model disagree by more than a match may correct,
@@ -204,7 +208,7 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
           global.converged &&
           std::hypot(apart.x_m, apart.y_m) <= options_.max_arbitration_disagreement_m &&
           std::abs(apart.theta_rad) <= options_.max_arbitration_disagreement_rad;
-      if (accepted(other, *predictions.alternative) &&
+      if (accepted(other, *predictions.alternative, !predictions.primary_is_odometry) &&
           (same_pose ||
            other.inlier_ratio >= global.inlier_ratio + options_.min_arbitration_ratio_gain)) {
         predicted = *predictions.alternative;
@@ -215,7 +219,7 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
       }
     }
     step.T_world_base = predicted;
-    if (accepted(global, predicted)) {
+    if (accepted(global, predicted, step.odometry_used)) {
       step.routine = Routine::kGlobal;
       step.T_world_base = global.T_target_source;
       step.information = global.information;
@@ -224,7 +228,9 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
       const IcpResult local = MatchIcp(input.points_base, target, predicted, options_.icp);
       if (local.converged && local.inlier_ratio >= options_.min_buffer_matching_ratio &&
           Plausible(options_, pose_, predicted, local.T_target_source) &&
-          GyroAgrees(input, local.T_target_source, options_.match_sigma_floor_rad)) {
+          GyroAgrees(input, local.T_target_source, options_.match_sigma_floor_rad) &&
+          (!step.odometry_used ||
+           OdometryAgrees(input, local.T_target_source, options_.match_sigma_floor_m))) {
         step.routine = Routine::kBuffer;
         step.T_world_base = local.T_target_source;
         step.matching_ratio = local.inlier_ratio;
@@ -247,8 +253,9 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
         }
       }
     }
-    // A gyro anchor's odometry must be turned by the gyro all along.
-    if (anchor_ && anchor_->heading_from_gyro && !input.heading_from_gyro) anchor_.reset();
+    // A gyro anchor's odometry must be turned by the gyro all along; once the gyro turns it
+    // (its first readings), the anchor is taken again, so the gyro's checks hold from there.
+    if (anchor_ && anchor_->heading_from_gyro != input.heading_from_gyro) anchor_.reset();
     if (step.information.isZero()) {
       step.routine = Routine::kOdometryOnly;
     } else if (step.routine == Routine::kRgbd) {
@@ -334,6 +341,25 @@ bool Tracker::GyroAgrees(const TrackInput& input, const PlanarPose& T_world_base
   const double variance = gyro_sigma_rad * gyro_sigma_rad + sigma_rad * sigma_rad;
   const double difference = WrapAngle(T_world_base.theta_rad - predicted_rad);
   return difference * difference <= options_.max_gyro_chi2 * variance;
+}
+
+bool Tracker::OdometryAgrees(const TrackInput& input, const PlanarPose& T_world_base,
+                             double sigma_m) const {
+  // Only odometry turned by a gyro: the model's covariance grows with the distance driven, and
+  // a wheel heading's error shifts the position sideways beyond it.
+  if (!anchor_ || !anchor_->heading_from_gyro || !input.heading_from_gyro || !input.T_odom_base ||
+      !Finite(*input.T_odom_base)) {
+    return true;
+  }
+  const PlanarPose moved = Between(anchor_->T_odom_base, *input.T_odom_base);
+  const PlanarPose predicted = Compose(anchor_->T_world_base, moved);
+  const Eigen::Matrix3d information = PredictionInformation(
+      options_, moved, ToSeconds(input.stamp_ns - anchor_->stamp_ns),
+      anchor_->heading_from_gyro ? Prediction::kGyroOdometry : Prediction::kOdometry);
+  // PredictionInformation is diagonal and the same in x and y.
+  const double variance = 1 / information(0, 0) + sigma_m * sigma_m;
+  const double dx = T_world_base.x_m - predicted.x_m, dy = T_world_base.y_m - predicted.y_m;
+  return (dx * dx + dy * dy) / variance <= options_.max_odometry_chi2;
 }
 
 void Tracker::OnKeyFramesMoved(const PlanarPose& T_new_old) {

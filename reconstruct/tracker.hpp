@@ -83,6 +83,11 @@ struct TrackerOptions {
   // covariance gets this floor (its Gauss-Newton information sees neither correlated echoes nor
   // the map's error).
   double max_gyro_chi2 = 10.83;
+  // With a gyro, a match whose position is further from the odometry's since the anchor than this
+  // chi-squared (two degrees of freedom, 99.9 %) allows, with the odometry model's covariance
+  // over that motion plus the match's floor, is not taken: the laser slid (ground echoes that
+  // move with the robot, a row of trunks) where the wheels did not.
+  double max_odometry_chi2 = 13.82;
   double match_sigma_floor_m = 0.005;
   double match_sigma_floor_rad = 0.005;
   void Validate() const;
@@ -151,6 +156,10 @@ class Tracker {
   // True unless the gyro turned the odometry since the anchor and the pose's heading, known to
   // sigma_rad, disagrees with it (max_gyro_chi2).
   bool GyroAgrees(const TrackInput& input, const PlanarPose& T_world_base, double sigma_rad) const;
+  // True unless gyro-turned odometry has run since the anchor and the pose's position, known to
+  // sigma_m, disagrees with it (max_odometry_chi2).
+  bool OdometryAgrees(const TrackInput& input, const PlanarPose& T_world_base,
+                      double sigma_m) const;
 
   TrackerOptions options_;
   KeyFrameMap* map_;
