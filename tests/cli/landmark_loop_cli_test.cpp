@@ -1,0 +1,83 @@
+// A short park survey that only landmarks can close: two lanes 15 m apart past 60 trunks, with a
+// UTM-30LX. The lanes are further apart than the dense loop closer searches, and each trunk is
+// seen from opposite sides on the way out and back, so scan matching alone drifts with the
+// wheels; the trunks' centres, recognised again by their constellation, close the loop.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "support/run_command.hpp"
+#include "support/temp_dir.hpp"
+
+namespace littermap {
+namespace {
+
+using testing::Quote;
+using testing::RunLittermap;
+
+constexpr const char* kWorld = R"(name: lanes
+seed: 5
+size_x_m: 60
+size_y_m: 40
+start_time_s: 1700000000
+terrain: {hill_amplitude_m: 0.2, hill_wavelength_m: 25, roots: 0}
+structure: {trees: 60, rocks: 0, benches: 0, bins: 0, fence_segments: 0, bushes: 0,
+            open_areas: 0, route_clearance_m: 1.5}
+litter: {count: 0}
+natural: {count: 0}
+robot:
+  laser: {preset: utm-30lx, rate_hz: 20}
+  camera: {rate_hz: 1}
+  odometry: {rate_hz: 50, scale_error: 0.02, yaw_drift_deg_per_m: 0.2}
+  imu: {rate_hz: 50}
+route:
+  type: lawnmower
+  polygon_m: [[5, 5], [55, 5], [55, 35], [5, 35]]
+  lane_spacing_m: 15
+  speed_mps: 1.0
+)";
+
+double Ate(const std::filesystem::path& estimate, const std::filesystem::path& truth) {
+  const auto eval =
+      RunLittermap("eval trajectory " + Quote(estimate) + " " + Quote(truth) + " --json");
+  EXPECT_EQ(eval.exit_code, 0) << eval.output;
+  return nlohmann::json::parse(eval.output).at("ate_rmse_m").get<double>();
+}
+
+TEST(LandmarkLoopCli, TrunksCloseTheLoopBetweenLanes) {
+  testing::TempDir d;
+  std::ofstream(d / "lanes.yaml") << kWorld;
+  auto result = RunLittermap("-q simulate " + Quote(d / "lanes.yaml") + " -o " +
+                             Quote(d / "bag") + " --truth " + Quote(d / "truth"));
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  result = RunLittermap("-q reconstruct " + Quote(d / "bag") + " -o " + Quote(d / "run"));
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::ofstream(d / "no-landmarks.yaml") << "landmarks: false\n";
+  result = RunLittermap("-q reconstruct " + Quote(d / "bag") + " -o " + Quote(d / "plain") +
+                        " --options " + Quote(d / "no-landmarks.yaml"));
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+
+  std::ifstream in(d / "run" / "quality.json");
+  const auto quality = nlohmann::json::parse(in);
+  const auto& landmarks = quality.at("landmarks");
+  // Measured: 74 landmarks in the graph, 5 constellation loops found and accepted.
+  EXPECT_GE(landmarks.at("in_graph").get<int>(), 40);
+  EXPECT_GE(landmarks.at("loops_accepted").get<int>(), 1);
+  EXPECT_LE(landmarks.at("loops_accepted").get<int>(), landmarks.at("loops_found").get<int>());
+
+  const auto truth = d / "truth" / "trajectory.tum";
+  const double ate = Ate(d / "run" / "trajectory.tum", truth);
+  const double plain_ate = Ate(d / "plain" / "trajectory.tum", truth);
+  const double odometry_ate = Ate(d / "run" / "odometry.tum", truth);
+  // Measured 0.011 m with landmarks, 0.38 m without, 0.55 m odometry.
+  EXPECT_LT(ate, 0.05);
+  EXPECT_GT(plain_ate, 0.1);
+  EXPECT_LT(ate, odometry_ate);
+}
+
+}  // namespace
+}  // namespace littermap
