@@ -109,6 +109,8 @@ std::optional<LandmarkObservation> SegmentLandmark(const Points2& segment,
   for (const Eigen::Vector2d& p : segment) mean_range += (p - laser_base).norm();
   mean_range /= static_cast<double>(segment.size());
   if ((fit.centre - laser_base).norm() <= mean_range) return std::nullopt;
+  // A circle about the robot itself (hostile or broken ranges) has no bearing to be seen at.
+  if (fit.centre.norm() <= fit.radius_m) return std::nullopt;
 
   const double sigma = std::max(fit.rms_residual_m, options.range_sigma_m);
   const Eigen::Matrix3d covariance =
