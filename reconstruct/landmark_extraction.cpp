@@ -100,7 +100,8 @@ std::optional<LandmarkObservation> SegmentLandmark(const Points2& segment,
   // Sagitta of the chord between the end echoes: a straight piece has none.
   const double half_chord = 0.5 * (segment.back() - segment.front()).norm();
   const double sagitta =
-      fit.radius_m - std::sqrt(std::max(0.0, fit.radius_m * fit.radius_m - half_chord * half_chord));
+      fit.radius_m -
+      std::sqrt(std::max(0.0, fit.radius_m * fit.radius_m - half_chord * half_chord));
   if (sagitta < options.min_sagitta_rms * std::max(fit.rms_residual_m, options.range_sigma_m)) {
     return std::nullopt;
   }
@@ -118,9 +119,9 @@ std::optional<LandmarkObservation> SegmentLandmark(const Points2& segment,
   LandmarkObservation observation;
   observation.centre_base = fit.centre;
   observation.radius_m = fit.radius_m;
-  observation.covariance_base = covariance.topLeftCorner<2, 2>() +
-                                options.centre_sigma_floor_m * options.centre_sigma_floor_m *
-                                    Eigen::Matrix2d::Identity();
+  observation.covariance_base =
+      covariance.topLeftCorner<2, 2>() +
+      options.centre_sigma_floor_m * options.centre_sigma_floor_m * Eigen::Matrix2d::Identity();
   observation.rms_residual_m = fit.rms_residual_m;
   observation.points = segment.size();
   if (!observation.covariance_base.allFinite()) return std::nullopt;
@@ -151,8 +152,8 @@ std::vector<LandmarkObservation> ExtractLandmarks(const Points2& points_base,
       continue;
     }
     if (!segment.empty()) {
-      const double gap = std::max(options.segment_gap_m,
-                                  options.segment_gap_beams * spacing_rad * range);
+      const double gap =
+          std::max(options.segment_gap_m, options.segment_gap_beams * spacing_rad * range);
       if ((p - segment.back()).norm() > gap) close_segment();
     }
     segment.push_back(p);

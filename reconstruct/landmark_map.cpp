@@ -9,6 +9,7 @@
 #include <Eigen/SVD>
 
 #include "core/error.hpp"
+#include "reconstruct/scan_points.hpp"
 
 namespace littermap::reconstruct {
 
@@ -31,11 +32,6 @@ void LandmarkMapOptions::Validate() const {
 }
 
 namespace {
-
-Eigen::Vector2d Apply(const PlanarPose& T, const Eigen::Vector2d& p) {
-  const double c = std::cos(T.theta_rad), s = std::sin(T.theta_rad);
-  return {T.x_m + c * p.x() - s * p.y(), T.y_m + s * p.x() + c * p.y()};
-}
 
 // Old landmarks by 1 m cells, for the inlier count of a transform.
 class CellIndex {
@@ -98,8 +94,8 @@ PlanarPose RigidTransform(const std::vector<Eigen::Vector2d>& a,
   }
   const double theta = std::atan2(sin_sum, cos_sum);
   const double c = std::cos(theta), s = std::sin(theta);
-  const Eigen::Vector2d t = mean_b - Eigen::Vector2d(c * mean_a.x() - s * mean_a.y(),
-                                                     s * mean_a.x() + c * mean_a.y());
+  const Eigen::Vector2d t =
+      mean_b - Eigen::Vector2d(c * mean_a.x() - s * mean_a.y(), s * mean_a.x() + c * mean_a.y());
   return {t.x(), t.y(), theta};
 }
 
@@ -124,7 +120,7 @@ std::size_t LandmarkMap::AddKeyFrame(std::size_t key_frame, const PlanarPose& T_
   };
   std::vector<Eigen::Vector2d> world(observations.size());
   for (std::size_t i = 0; i < observations.size(); ++i) {
-    world[i] = Apply(T_world_keyframe, observations[i].centre_base);
+    world[i] = Transform(T_world_keyframe, observations[i].centre_base);
   }
   std::vector<Candidate> candidates;
   for (std::size_t l = 0; l < landmarks_.size(); ++l) {
@@ -206,7 +202,8 @@ std::optional<LandmarkLoop> LandmarkMap::FindLoop(
   std::vector<Pair> old_pairs;
   for (std::size_t i = 0; i < old.size(); ++i) {
     for (std::size_t j = i + 1; j < old.size(); ++j) {
-      const double d = (landmarks_[old[i]].position_world - landmarks_[old[j]].position_world).norm();
+      const double d =
+          (landmarks_[old[i]].position_world - landmarks_[old[j]].position_world).norm();
       if (d >= options_.min_pair_distance_m) old_pairs.push_back({d, old[i], old[j]});
     }
   }
@@ -219,7 +216,7 @@ std::optional<LandmarkLoop> LandmarkMap::FindLoop(
     std::vector<std::size_t> used;
     for (std::size_t i : local) {
       const Landmark& l = landmarks_[i];
-      const auto match = index.Nearest(Apply(T, l.position_world), l.radius_m,
+      const auto match = index.Nearest(Transform(T, l.position_world), l.radius_m,
                                        options_.inlier_gate_m, options_.radius_gate_m);
       if (!match || std::find(used.begin(), used.end(), *match) != used.end()) continue;
       used.push_back(*match);
@@ -235,9 +232,8 @@ std::optional<LandmarkLoop> LandmarkMap::FindLoop(
       const Eigen::Vector2d dij = lj.position_world - li.position_world;
       const double d = dij.norm();
       if (d < options_.min_pair_distance_m) continue;
-      auto it = std::lower_bound(
-          old_pairs.begin(), old_pairs.end(), d - options_.pair_tolerance_m,
-          [](const Pair& p, double value) { return p.distance_m < value; });
+      auto it = std::lower_bound(old_pairs.begin(), old_pairs.end(), d - options_.pair_tolerance_m,
+                                 [](const Pair& p, double value) { return p.distance_m < value; });
       for (; it != old_pairs.end() && it->distance_m <= d + options_.pair_tolerance_m; ++it) {
         for (int flip = 0; flip < 2; ++flip) {
           const Landmark& la = landmarks_[flip == 0 ? it->a : it->b];
@@ -251,15 +247,16 @@ std::optional<LandmarkLoop> LandmarkMap::FindLoop(
               WrapAngle(std::atan2(dab.y(), dab.x()) - std::atan2(dij.y(), dij.x()));
           const double c = std::cos(theta), s = std::sin(theta);
           const Eigen::Vector2d t =
-              la.position_world - Eigen::Vector2d(c * li.position_world.x() - s * li.position_world.y(),
-                                                  s * li.position_world.x() + c * li.position_world.y());
+              la.position_world -
+              Eigen::Vector2d(c * li.position_world.x() - s * li.position_world.y(),
+                              s * li.position_world.x() + c * li.position_world.y());
           const PlanarPose T{t.x(), t.y(), theta};
           // The drift bound, checked on the robot's own position before scoring.
           const PlanarPose corrected = Compose(T, T_world_current);
           const double graph = std::min(graph_m(la), graph_m(lb));
           if (std::hypot(corrected.x_m - here.x(), corrected.y_m - here.y()) > bound_m(graph) ||
-              std::abs(theta) > options_.max_correction_rad +
-                                    options_.max_correction_rad_per_m * graph) {
+              std::abs(theta) >
+                  options_.max_correction_rad + options_.max_correction_rad_per_m * graph) {
             continue;
           }
           Hypothesis h = score(T);
@@ -341,7 +338,7 @@ void LandmarkMap::UpdatePositions(const std::vector<PlanarPose>& key_frame_poses
   std::vector<std::size_t> count(landmarks_.size(), 0);
   for (const LandmarkSighting& s : sightings_) {
     if (s.key_frame >= key_frame_poses.size()) continue;
-    sum[s.landmark] += Apply(key_frame_poses[s.key_frame], s.observation.centre_base);
+    sum[s.landmark] += Transform(key_frame_poses[s.key_frame], s.observation.centre_base);
     radius[s.landmark] += s.observation.radius_m;
     ++count[s.landmark];
   }
@@ -353,9 +350,10 @@ void LandmarkMap::UpdatePositions(const std::vector<PlanarPose>& key_frame_poses
 }
 
 std::size_t LandmarkMap::graph_landmarks() const {
-  return static_cast<std::size_t>(std::count_if(landmarks_.begin(), landmarks_.end(), [&](const Landmark& l) {
-    return !l.merged && l.observations >= options_.min_graph_observations;
-  }));
+  return static_cast<std::size_t>(
+      std::count_if(landmarks_.begin(), landmarks_.end(), [&](const Landmark& l) {
+        return !l.merged && l.observations >= options_.min_graph_observations;
+      }));
 }
 
 }  // namespace littermap::reconstruct

@@ -46,7 +46,7 @@ struct LandmarkMapOptions {
   double min_pair_distance_m = 2;
   double inlier_gate_m = 0.3;
   std::size_t min_inliers = 5;
-  double min_inlier_spread_m = 1.5;  // standard deviation of the inliers along their thinner axis
+  double min_inlier_spread_m = 1.5;   // standard deviation of the inliers along their thinner axis
   std::size_t min_inlier_margin = 2;  // over the best transform that differs
   double distinct_transform_m = 0.5;
   double distinct_transform_rad = 0.05;
@@ -89,8 +89,8 @@ class LandmarkMap {
 
   // Associates a new key frame's circles (tracking, see above); returns how many were associated
   // with a landmark already known.
-  std::size_t AddKeyFrame(std::size_t key_frame, const PlanarPose& T_world_keyframe,
-                          double path_m, const std::vector<LandmarkObservation>& observations);
+  std::size_t AddKeyFrame(std::size_t key_frame, const PlanarPose& T_world_keyframe, double path_m,
+                          const std::vector<LandmarkObservation>& observations);
   // Place recognition around the key frame at T_world_current; graph_distance_m per key frame
   // (GraphDistances from the current one) for the drift bound.
   std::optional<LandmarkLoop> FindLoop(const PlanarPose& T_world_current, double path_m,

@@ -150,8 +150,7 @@ double EdgeChi2(const std::vector<PlanarPose>& poses, const PoseGraphEdge& edge)
 }
 
 LoopPruning PruneLoops(std::vector<PlanarPose>* poses, std::vector<PoseGraphEdge>* edges,
-                       double max_chi2, const PoseGraphOptions& options,
-                       LandmarkTerms* landmarks) {
+                       double max_chi2, const PoseGraphOptions& options, LandmarkTerms* landmarks) {
   LoopPruning pruning;
   for (;;) {
     std::optional<std::size_t> worst;

@@ -73,8 +73,8 @@ class RangeBearingError {
     Eigen::Matrix2d J;
     J << centre_a.x() / range_, centre_a.y() / range_, -centre_a.y() / r2, centre_a.x() / r2;
     const Eigen::Matrix2d covariance = J * covariance_a * J.transpose();
-    const Eigen::Matrix2d information =
-        (0.5 * (covariance + covariance.transpose())).inverse() + 1e-9 * Eigen::Matrix2d::Identity();
+    const Eigen::Matrix2d information = (0.5 * (covariance + covariance.transpose())).inverse() +
+                                        1e-9 * Eigen::Matrix2d::Identity();
     sqrt_information_ = information.llt().matrixU();
   }
 

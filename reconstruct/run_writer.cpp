@@ -96,13 +96,12 @@ std::string QualityJson(const SlamQuality& quality, const ReconstructionResult& 
   json["loop_closures_rejected_match"] = quality.loops_rejected_match;
   json["loop_closures_rejected_disagreement"] = quality.loops_rejected_disagreement;
   json["loop_closures_rejected_after_optimisation"] = quality.loops_rejected_after_optimisation;
-  json["landmarks"] = {
-      {"in_graph", quality.landmarks},
-      {"sightings", quality.landmark_sightings},
-      {"associated_by_tracking", quality.landmark_associations},
-      {"loops_found", quality.landmark_loops_found},
-      {"loops_accepted", quality.landmark_loops_accepted},
-      {"loops_rejected", quality.landmark_loops_rejected}};
+  json["landmarks"] = {{"in_graph", quality.landmarks},
+                       {"sightings", quality.landmark_sightings},
+                       {"associated_by_tracking", quality.landmark_associations},
+                       {"loops_found", quality.landmark_loops_found},
+                       {"loops_accepted", quality.landmark_loops_accepted},
+                       {"loops_rejected", quality.landmark_loops_rejected}};
   json["optimisations"] = quality.optimisations;
   json["final_cost"] = quality.final_cost;
   if (quality.alignment.rounds > 0) {

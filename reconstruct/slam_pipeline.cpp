@@ -86,11 +86,11 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdomet
   input.T_odom_base = T_odom_base;
   input.heading_from_gyro = odometry && odometry->heading_from_gyro;
   input.tilt = tilt;
-  Points2 map_points_base = std::move(points.points_base);
-  // Every echo in beam order, for the landmarks of a key frame.
-  const Points2 echoes_base = options_.landmarks ? map_points_base : Points2{};
+  // Every echo in beam order: drawn into the map, and searched for landmarks at a key frame.
+  const Points2 echoes_base = std::move(points.points_base);
+  std::optional<Points2> still_base;  // the echoes the moving-echo filter kept, where it ran
   if (points.valid_beams >= options_.min_scan_points) {
-    input.points_base = VoxelDownsample(map_points_base, options_.scan_voxel_size_m);
+    input.points_base = VoxelDownsample(echoes_base, options_.scan_voxel_size_m);
     // Wheels alone can slip by degrees in a quarter of a second: only a gyro's heading will do.
     const MovingEchoMode mode = options_.moving_echoes.mode;
     if (mode != MovingEchoMode::kOff && tilt && odometry && odometry->heading_from_gyro) {
@@ -105,7 +105,7 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdomet
         quality_.moving_echoes += still.moving;
         if (still.given_up) ++quality_.scans_moving_echoes;  // tracked like a scan without echoes
         input.points_base = still.given_up ? Points2{} : still.points_base;
-        map_points_base = std::move(still.points_base);  // the map does not draw the arcs either
+        still_base = std::move(still.points_base);  // the map does not draw the arcs either
       }
     }
   } else {
@@ -134,14 +134,14 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdomet
     record.z_m = scans_.back().z_m;
   }
   scans_.push_back(record);
-  StoreMapPoints(map_points_base);
+  StoreMapPoints(still_base ? *still_base : echoes_base);
   if (step.new_key_frame) {
     if (step.key_frame > 0) AddGraphEdge(step);
     if (options_.landmarks) {
       const KeyFrame& frame = map_.key_frames()[step.key_frame];
-      const std::vector<LandmarkObservation> circles = ExtractLandmarks(
-          echoes_base, {T_base_laser_.x_m, T_base_laser_.y_m}, scan.angle_increment_rad,
-          options_.landmark_extraction);
+      const std::vector<LandmarkObservation> circles =
+          ExtractLandmarks(echoes_base, {T_base_laser_.x_m, T_base_laser_.y_m},
+                           scan.angle_increment_rad, options_.landmark_extraction);
       quality_.landmark_sightings += circles.size();
       quality_.landmark_associations += landmark_map_.AddKeyFrame(
           step.key_frame, frame.T_world_base, frame.path_length_m, circles);
@@ -251,7 +251,8 @@ LandmarkTerms SlamPipeline::BuildLandmarkTerms(std::vector<std::size_t>* landmar
 }
 
 void SlamPipeline::ApplyPoses(const std::vector<PlanarPose>& poses) {
-  const PlanarPose T_new_old = Compose(poses.back(), Inverse(map_.key_frames().back().T_world_base));
+  const PlanarPose T_new_old =
+      Compose(poses.back(), Inverse(map_.key_frames().back().T_world_base));
   map_.SetPoses(poses);
   tracker_.OnKeyFramesMoved(T_new_old);
   landmark_map_.UpdatePositions(poses);
@@ -261,20 +262,12 @@ void SlamPipeline::CloseLandmarkLoops(std::size_t key_frame) {
   const KeyFrame& frame = map_.key_frames()[key_frame];
   if (frame.path_length_m - last_landmark_search_path_m_ < options_.landmark_loop_search_every_m) {
     // Between searches, sightings of old landmarks still pull the graph now and then.
-    if (landmark_links_.empty() ||
-        key_frame < last_landmark_optimised_key_frame_ +
-                        options_.landmark_optimise_every_key_frames) {
+    if (landmark_links_.empty() || key_frame < last_landmark_optimised_key_frame_ +
+                                                   options_.landmark_optimise_every_key_frames) {
       return;
     }
     last_landmark_optimised_key_frame_ = key_frame;
-    std::vector<PlanarPose> poses = map_.Poses();
-    LandmarkTerms terms = BuildLandmarkTerms();
-    const PoseGraphResult result = OptimizePoseGraph(&poses, edges_, options_.graph, &terms);
-    ++quality_.optimisations;
-    if (result.usable) {
-      quality_.final_cost = result.final_cost;
-      ApplyPoses(poses);
-    }
+    Optimise();
     return;
   }
   last_landmark_search_path_m_ = frame.path_length_m;

@@ -62,7 +62,7 @@ struct SlamOptions {
   // Once landmarks closed a loop, the graph is optimised this often (key frames) so the sightings
   // of old landmarks keep holding the trajectory between loops.
   std::size_t landmark_optimise_every_key_frames = 10;
-  double wide_loop_search_every_m = 8;       // path between two wide loop searches
+  double wide_loop_search_every_m = 8;  // path between two wide loop searches
   // An optimised loop edge further than this from its measurement did not fit the graph.
   double max_loop_residual_m = 0.2;
   double max_loop_residual_rad = 0.05;
@@ -118,7 +118,7 @@ struct SlamQuality {
   std::size_t landmark_loops_found = 0;
   std::size_t landmark_loops_accepted = 0;
   std::size_t landmark_loops_rejected = 0;  // after optimisation: the merged sightings did not fit
-  ScanAlignmentResult alignment;  // the final scan alignment, if it ran
+  ScanAlignmentResult alignment;            // the final scan alignment, if it ran
 };
 
 class SlamPipeline {

@@ -102,8 +102,10 @@ void TrackerOptions::Validate() const {
         "tracker: min_ratio_large_turn_correction must be in (0, 1] and "
         "max_large_turn_correction_rad >= max_correction_rad");
   }
-  if (!(max_gyro_chi2 > 0) || !(max_odometry_chi2 > 0) || !(match_sigma_floor_m > 0) || !(match_sigma_floor_rad > 0)) {
-    throw UsageError("tracker: max_gyro_chi2, max_odometry_chi2 and the match sigma floors must be > 0");
+  if (!(max_gyro_chi2 > 0) || !(max_odometry_chi2 > 0) || !(match_sigma_floor_m > 0) ||
+      !(match_sigma_floor_rad > 0)) {
+    throw UsageError(
+        "tracker: max_gyro_chi2, max_odometry_chi2 and the match sigma floors must be > 0");
   }
   if (!(max_arbitration_disagreement_m > 0) || !(max_arbitration_disagreement_rad > 0) ||
       !(min_arbitration_ratio_gain >= 0) || !(max_arbitration_gap_s >= 0)) {

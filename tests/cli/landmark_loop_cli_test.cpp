@@ -51,8 +51,8 @@ double Ate(const std::filesystem::path& estimate, const std::filesystem::path& t
 TEST(LandmarkLoopCli, TrunksCloseTheLoopBetweenLanes) {
   testing::TempDir d;
   std::ofstream(d / "lanes.yaml") << kWorld;
-  auto result = RunLittermap("-q simulate " + Quote(d / "lanes.yaml") + " -o " +
-                             Quote(d / "bag") + " --truth " + Quote(d / "truth"));
+  auto result = RunLittermap("-q simulate " + Quote(d / "lanes.yaml") + " -o " + Quote(d / "bag") +
+                             " --truth " + Quote(d / "truth"));
   ASSERT_EQ(result.exit_code, 0) << result.output;
   result = RunLittermap("-q reconstruct " + Quote(d / "bag") + " -o " + Quote(d / "run"));
   ASSERT_EQ(result.exit_code, 0) << result.output;

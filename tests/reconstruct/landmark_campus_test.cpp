@@ -34,8 +34,8 @@ struct Cluster {
 };
 
 TEST(LandmarkCampusTest, RoundObstaclesAreFoundWhereTheyAreFromEverySide) {
-  const auto path = std::filesystem::path(LITTERMAP_DATASETS_DIR) / "carmen" /
-                    "freiburg-campus-corrected.log.gz";
+  const auto path =
+      std::filesystem::path(LITTERMAP_DATASETS_DIR) / "carmen" / "freiburg-campus-corrected.log.gz";
   ASSERT_TRUE(std::filesystem::exists(path)) << "missing data set " << path;
   const CarmenLog log = ReadCarmenLog(path);
   const CarmenRangeLimits limits = CarmenRanges(log.scans);

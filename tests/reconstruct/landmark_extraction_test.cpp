@@ -131,7 +131,8 @@ TEST(ExtractLandmarksTest, TheCentreIsTheSameFromOppositeSides) {
   EXPECT_LT((west[0].centre_base - east_world).norm(), 0.03);
   // The echoes themselves are about a diameter apart: a matcher overlaying them would be off.
   double west_x = 0, east_x = 0;
-  for (const Eigen::Vector2d& p : from_west) west_x += p.x() / static_cast<double>(from_west.size());
+  for (const Eigen::Vector2d& p : from_west)
+    west_x += p.x() / static_cast<double>(from_west.size());
   for (const Eigen::Vector2d& p : east_local) {
     east_x += (10 - p.x()) / static_cast<double>(east_local.size());
   }

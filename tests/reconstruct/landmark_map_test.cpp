@@ -139,8 +139,7 @@ TEST(LandmarkMapAmbiguityTest, RejectsAMatchThatTwoOldPlacesFitAsWell) {
   path_m += 100;
   for (double x = -3; x <= 3; x += 1) {
     here = {x + 15, 0, 0};
-    single.AddKeyFrame(key_frame++, here, path_m,
-                       Observe(Constellation({0, 0}), {x, 0, 0}, &rng));
+    single.AddKeyFrame(key_frame++, here, path_m, Observe(Constellation({0, 0}), {x, 0, 0}, &rng));
     path_m += 1;
   }
   EXPECT_TRUE(single.FindLoop(here, path_m, {}).has_value());

@@ -156,8 +156,8 @@ TEST(PoseGraph, LandmarkSightingsCorrectBiasedOdometry) {
     landmarks.positions.push_back(trunk + Eigen::Vector2d(0.3, 0));  // where the drift put it
     for (std::size_t i = 0; i < truth.size(); ++i) {
       const Eigen::Vector2d seen(trunk.x() - truth[i].x_m, trunk.y() - truth[i].y_m);
-      landmarks.terms.push_back({i, landmarks.positions.size() - 1, seen,
-                                 0.02 * 0.02 * Eigen::Matrix2d::Identity()});
+      landmarks.terms.push_back(
+          {i, landmarks.positions.size() - 1, seen, 0.02 * 0.02 * Eigen::Matrix2d::Identity()});
     }
   }
   const PoseGraphResult result = OptimizePoseGraph(&poses, edges, PoseGraphOptions{}, &landmarks);
