@@ -26,10 +26,7 @@ bool LaneInterval(const std::vector<Eigen::Vector2d>& polygon, double y, double&
 
 double Clamp(double value, double limit) { return std::clamp(value, -limit, limit); }
 
-}  // namespace
-
-std::vector<Eigen::Vector2d> PlanRoute(const RouteSpec& spec) {
-  if (spec.type != "lawnmower") return spec.waypoints_m;
+std::vector<Eigen::Vector2d> LawnmowerLanes(const RouteSpec& spec) {
   double y_min = std::numeric_limits<double>::infinity(), y_max = -y_min;
   for (const Eigen::Vector2d& p : spec.polygon_m) {
     y_min = std::min(y_min, p.y());
@@ -44,6 +41,17 @@ std::vector<Eigen::Vector2d> PlanRoute(const RouteSpec& spec) {
     route.push_back(forward ? left : right);
     route.push_back(forward ? right : left);
     forward = !forward;
+  }
+  return route;
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector2d> PlanRoute(const RouteSpec& spec) {
+  std::vector<Eigen::Vector2d> route = spec.type == "lawnmower" ? LawnmowerLanes(spec)
+                                                                 : spec.waypoints_m;
+  if (spec.come_home && route.size() >= 2 && (route.back() - route.front()).norm() > 1e-9) {
+    route.push_back(route.front());
   }
   return route;
 }

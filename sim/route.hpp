@@ -17,7 +17,8 @@
 namespace littermap::sim {
 
 // The waypoints of a route: spec.waypoints_m, or boustrophedon lanes along x across the polygon
-// (assumed convex), lane_spacing_m apart, entered 0.5 m inside its edges.
+// (assumed convex), lane_spacing_m apart, entered 0.5 m inside its edges; with come_home, a last
+// leg straight back to the first waypoint.
 std::vector<Eigen::Vector2d> PlanRoute(const RouteSpec& spec);
 
 struct RobotState {

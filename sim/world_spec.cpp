@@ -137,6 +137,7 @@ void ReadRoute(YamlFields fields, RouteSpec& route) {
   fields.Read("polygon_m", route.polygon_m);
   fields.Read("lane_spacing_m", route.lane_spacing_m);
   fields.Read("speed_mps", route.speed_mps);
+  fields.Read("come_home", route.come_home);
   Check(fields, "type", route.type == "waypoints" || route.type == "lawnmower",
         "must be waypoints or lawnmower");
   Check(fields, "speed_mps", route.speed_mps >= 0.05 && route.speed_mps <= 3,

@@ -128,6 +128,8 @@ struct RouteSpec {
   std::vector<Eigen::Vector2d> polygon_m;  // lawnmower: area to cover
   double lane_spacing_m = 4;
   double speed_mps = 0.6;  // 0.3..1.0
+  // The survey ends where it started (at the dock): a last leg back to the first waypoint.
+  bool come_home = false;
 };
 
 struct BumpSpec {  // a root or bump on the route that tilts the robot

@@ -44,6 +44,16 @@ void YamlFields::Read(const char* key, double& value) {
   if (!std::isfinite(value)) Fail(key, "must be finite");
 }
 
+void YamlFields::Read(const char* key, bool& value) {
+  const YAML::Node node = Get(key);
+  if (!node) return;
+  try {
+    value = node.as<bool>();
+  } catch (const YAML::Exception&) {
+    Fail(key, "expected true or false");
+  }
+}
+
 void YamlFields::Read(const char* key, int& value) {
   const YAML::Node node = Get(key);
   if (!node) return;

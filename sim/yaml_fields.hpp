@@ -19,6 +19,7 @@ class YamlFields {
   YamlFields(const YAML::Node& node, const std::filesystem::path& file, std::string prefix);
 
   void Read(const char* key, double& value);
+  void Read(const char* key, bool& value);
   void Read(const char* key, int& value);
   void Read(const char* key, std::uint64_t& value);
   void Read(const char* key, std::string& value);

@@ -50,6 +50,32 @@ TEST(Route, LawnmowerSweepsThePolygonInLanes) {
   EXPECT_EQ(route[3], Eigen::Vector2d(0.5, 6));
 }
 
+TEST(Route, ComeHomeEndsTheSurveyWhereItBegan) {
+  RouteSpec lanes;
+  lanes.type = "lawnmower";
+  lanes.polygon_m = {{0, 0}, {20, 0}, {20, 10}, {0, 10}};
+  lanes.lane_spacing_m = 4;
+  lanes.come_home = true;
+  const auto route = PlanRoute(lanes);
+  ASSERT_EQ(route.size(), 5u);  // the two lanes, then back to where the first began
+  EXPECT_EQ(route[3], Eigen::Vector2d(0.5, 6));
+  EXPECT_EQ(route[4], Eigen::Vector2d(0.5, 2));
+
+  RouteSpec waypoints;
+  waypoints.waypoints_m = {{0, 0}, {10, 0}, {10, 5}};
+  waypoints.come_home = true;
+  EXPECT_EQ(PlanRoute(waypoints).back(), Eigen::Vector2d(0, 0));
+  EXPECT_EQ(PlanRoute(waypoints).size(), 4u);
+  // A route that already ends at the dock gets no leg of zero length.
+  waypoints.waypoints_m.push_back({0, 0});
+  EXPECT_EQ(PlanRoute(waypoints).size(), 4u);
+  // Driven, the survey stops at the dock.
+  const DriveResult drive = DriveRoute(PlanRoute(lanes), {});
+  ASSERT_TRUE(drive.reached_goal);
+  EXPECT_NEAR(drive.states.back().pose.x_m, 0.5, 0.15);
+  EXPECT_NEAR(drive.states.back().pose.y_m, 2, 0.15);
+}
+
 TEST(Route, BumpsTiltTheRobotAtTheConfiguredPlaces) {
   const WorldSpec spec = LoadWorldSpec(SampleWorld());
   const Simulation simulation(spec);

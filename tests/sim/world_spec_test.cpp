@@ -39,6 +39,11 @@ TEST(WorldSpec, SamplesLoad) {
   EXPECT_DOUBLE_EQ(small.robot.camera.mount.pitch_deg, 25);
   EXPECT_DOUBLE_EQ(small.robot.camera.rate_hz, 10);
   EXPECT_EQ(small.truth.mask_every_n_frames, 10);
+  // Every shipped survey ends at the dock.
+  EXPECT_TRUE(small.route.come_home);
+  EXPECT_TRUE(large.route.come_home);
+  for (const auto& [name, route] : large.routes) EXPECT_TRUE(route.come_home) << name;
+  EXPECT_TRUE(LoadWorldSpec(SampleWorld("park_tilts.yaml")).route.come_home);
 }
 
 TEST(WorldSpec, CameraAndTruthSections) {
@@ -77,6 +82,8 @@ TEST(WorldSpec, BadValuesNameTheKey) {
             "w.yaml: robot.laser.preset: must be urg-04lx or utm-30lx");
   EXPECT_EQ(ErrorOf("route: {waypoints_m: [[0, 0]]}\n"),
             "w.yaml: route.waypoints_m: needs at least two points");
+  EXPECT_EQ(ErrorOf("route: {waypoints_m: [[0, 0], [5, 0]], come_home: maybe}\n"),
+            "w.yaml: route.come_home: expected true or false");
   EXPECT_NE(ErrorOf("[1, 2"), "no error");
   EXPECT_EQ(ErrorOf(kRoute), "no error");
 }
