@@ -22,10 +22,17 @@ void ScanPointsOptions::Validate() const {
 ScanPoints ScanToPoints(const LaserScan& scan, const PlanarPose& T_base_laser,
                         const ScanPointsOptions& options, const std::optional<Tilt>& tilt) {
   const bool ground_filter = tilt && options.laser_height_m > 0;
-  // Vertical component of a horizontal beam at heading a in base_link after the tilt
-  // R = Ry(pitch) Rx(roll): -sin(pitch) cos(a) + cos(pitch) sin(roll) sin(a).
-  const double down_x = ground_filter ? -std::sin(tilt->pitch_rad) : 0;
-  const double down_y = ground_filter ? std::cos(tilt->pitch_rad) * std::sin(tilt->roll_rad) : 0;
+  // A beam at heading h in base_link, (cos h, sin h, 0), after the tilt R = Ry(pitch) Rx(roll):
+  //   x = cos(pitch) cos h + sin(pitch) sin(roll) sin h
+  //   y = cos(roll) sin h
+  //   z = -sin(pitch) cos h + cos(pitch) sin(roll) sin h
+  // Its echo off an upright trunk or wall lies at r (x, y) in the ground plane, not r (cos h,
+  // sin h): 14 degrees of pitch on a root put a trunk 5 m ahead 15 cm too far.
+  const double pitch = tilt ? tilt->pitch_rad : 0, roll = tilt ? tilt->roll_rad : 0;
+  const double x_cos = std::cos(pitch), x_sin = std::sin(pitch) * std::sin(roll);
+  const double y_sin = std::cos(roll);
+  const double down_x = -std::sin(pitch), down_y = std::cos(pitch) * std::sin(roll);
+  const Eigen::Vector2d laser_base(T_base_laser.x_m, T_base_laser.y_m);
   ScanPoints result;
   result.beams = scan.ranges_m.size();
   result.points_base.reserve(scan.ranges_m.size());
@@ -36,16 +43,22 @@ ScanPoints ScanToPoints(const LaserScan& scan, const PlanarPose& T_base_laser,
     // "r < max_range" rejects NaN too; a reading at range_max means no echo (REP 117, CARMEN).
     if (!(r >= min_range && r < max_range)) continue;
     const double angle = scan.AngleOf(i);
+    if (!tilt) {
+      result.points_base.push_back(
+          Transform(T_base_laser, Eigen::Vector2d(r * std::cos(angle), r * std::sin(angle))));
+      ++result.valid_beams;
+      continue;
+    }
+    const double heading = angle + T_base_laser.theta_rad;
+    const double c = std::cos(heading), s = std::sin(heading);
     if (ground_filter) {
-      const double heading = angle + T_base_laser.theta_rad;
-      const double vertical = down_x * std::cos(heading) + down_y * std::sin(heading);
+      const double vertical = down_x * c + down_y * s;
       if (vertical < 0 && r >= options.ground_range_fraction * options.laser_height_m / -vertical) {
         ++result.ground_beams;
         continue;
       }
     }
-    result.points_base.push_back(
-        Transform(T_base_laser, Eigen::Vector2d(r * std::cos(angle), r * std::sin(angle))));
+    result.points_base.push_back(laser_base + r * Eigen::Vector2d(x_cos * c + x_sin * s, y_sin * s));
     ++result.valid_beams;
   }
   return result;

@@ -65,6 +65,11 @@ void FuseWithPrediction(const PlanarPose& predicted, const Eigen::Matrix3d& pred
   step->information = information;
 }
 
+// The angle between the base's up axis and gravity's.
+double TiltAngle(const Tilt& tilt) {
+  return std::acos(std::clamp(std::cos(tilt.roll_rad) * std::cos(tilt.pitch_rad), -1.0, 1.0));
+}
+
 bool Finite(const PlanarPose& p) {
   return std::isfinite(p.x_m) && std::isfinite(p.y_m) && std::isfinite(p.theta_rad);
 }
@@ -91,10 +96,11 @@ void TrackerOptions::Validate() const {
   buffer.Validate();
   if (!(min_matching_ratio > 0 && min_matching_ratio <= 1) ||
       !(min_buffer_matching_ratio > 0 && min_buffer_matching_ratio <= 1) ||
-      !(rgbd_ratio_slack >= 0) || !(rgbd_sigma_m > 0) || !(rgbd_sigma_rad > 0)) {
+      !(tilted_min_matching_ratio > 0 && tilted_min_matching_ratio <= 1) ||
+      !(max_level_tilt_rad > 0) || !(rgbd_ratio_slack >= 0) || !(rgbd_sigma_m > 0) || !(rgbd_sigma_rad > 0)) {
     throw UsageError(
-        "tracker: matching ratios must be in (0, 1], rgbd_ratio_slack >= 0 and the RGB-D "
-        "sigmas > 0");
+        "tracker: matching ratios must be in (0, 1], max_level_tilt_rad > 0, rgbd_ratio_slack >= 0 "
+        "and the RGB-D sigmas > 0");
   }
   if (!(min_ratio_large_turn_correction > 0 && min_ratio_large_turn_correction <= 1) ||
       !(max_large_turn_correction_rad >= max_correction_rad)) {
@@ -184,8 +190,17 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
     step.odometry_used = predictions.primary_is_odometry;
     // from_odometry: the match started from the odometry's prediction, which it must then agree
     // with (OdometryAgrees); the laser's arbitration against broken odometry starts elsewhere.
+    // Tilted beyond level, the scan plane sweeps other heights of the scene than the map's: only
+    // a match that overlays most of the scan is the laser's.
+    const bool steep = input.tilt && TiltAngle(*input.tilt) > options_.max_level_tilt_rad;
+    const double min_ratio =
+        steep ? std::max(options_.tilted_min_matching_ratio, options_.min_matching_ratio)
+              : options_.min_matching_ratio;
+    const double min_buffer_ratio =
+        steep ? std::max(options_.tilted_min_matching_ratio, options_.min_buffer_matching_ratio)
+              : options_.min_buffer_matching_ratio;
     const auto accepted = [&](const IcpResult& match, const PlanarPose& from, bool from_odometry) {
-      return match.converged && match.inlier_ratio >= options_.min_matching_ratio &&
+      return match.converged && match.inlier_ratio >= min_ratio &&
              Plausible(options_, pose_, from, match.T_target_source, match.inlier_ratio) &&
              GyroAgrees(input, match.T_target_source, options_.match_sigma_floor_rad) &&
              (!from_odometry ||
@@ -228,7 +243,7 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
     } else if (const BufferedFrame* near = buffer_.Nearest(predicted)) {
       const IcpTarget target(TransformPoints(near->T_world_base, near->points_base), options_.icp);
       const IcpResult local = MatchIcp(input.points_base, target, predicted, options_.icp);
-      if (local.converged && local.inlier_ratio >= options_.min_buffer_matching_ratio &&
+      if (local.converged && local.inlier_ratio >= min_buffer_ratio &&
           Plausible(options_, pose_, predicted, local.T_target_source) &&
           GyroAgrees(input, local.T_target_source, options_.match_sigma_floor_rad) &&
           (!step.odometry_used ||

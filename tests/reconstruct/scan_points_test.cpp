@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 namespace littermap::reconstruct {
@@ -42,6 +43,37 @@ TEST(ScanPoints, TiltedScannerDropsItsGroundHits) {
   EXPECT_EQ(ScanToPoints(RingScan(), {}, options, Tilt{}).points_base.size(), 360u);
   EXPECT_EQ(ScanToPoints(RingScan(), {}, options).points_base.size(), 360u);
   EXPECT_EQ(ScanToPoints(RingScan(), {}, {}, Tilt{0, 5 * kDeg}).points_base.size(), 360u);
+}
+
+TEST(ScanPoints, TiltedEchoesLieWhereTheBeamMetTheUprightObstacle) {
+  // Each echo lies at the ground-plane position of the 3D point the tilted beam reached: the
+  // beam's direction rotated by R = Ry(pitch) Rx(roll), taken in x and y, times the range.
+  const PlanarPose T_base_laser{0.2, -0.1, 0.3};
+  const Tilt tilt{-6 * kDeg, 14 * kDeg};
+  const ScanPoints points = ScanToPoints(RingScan(), T_base_laser, {}, tilt);
+  ASSERT_EQ(points.points_base.size(), 360u);
+  const Eigen::Matrix3d R = (Eigen::AngleAxisd(tilt.pitch_rad, Eigen::Vector3d::UnitY()) *
+                             Eigen::AngleAxisd(tilt.roll_rad, Eigen::Vector3d::UnitX()))
+                                .toRotationMatrix();
+  const LaserScan scan = RingScan();
+  for (std::size_t i = 0; i < 360; i += 7) {
+    const double heading = scan.AngleOf(i) + T_base_laser.theta_rad;
+    const Eigen::Vector3d beam = R * Eigen::Vector3d(std::cos(heading), std::sin(heading), 0);
+    const Eigen::Vector2d expected =
+        Eigen::Vector2d(T_base_laser.x_m, T_base_laser.y_m) + 5.0 * beam.head<2>();
+    EXPECT_NEAR((points.points_base[i] - expected).norm(), 0, 1e-9) << i;
+  }
+  // Straight ahead on a 14-degree root, a trunk 5 m along the beam is 4.851 m away on the ground:
+  // 15 cm nearer than a flat scan puts it.
+  const ScanPoints pitched = ScanToPoints(RingScan(), {}, {}, Tilt{0, 14 * kDeg});
+  EXPECT_NEAR(pitched.points_base[180].x(), 5 * std::cos(14 * kDeg), 1e-9);
+  EXPECT_NEAR(pitched.points_base[180].x(), 4.851, 1e-3);
+  // Level, a flat scan is what it was.
+  const ScanPoints level = ScanToPoints(RingScan(), T_base_laser, {}, Tilt{});
+  const ScanPoints flat = ScanToPoints(RingScan(), T_base_laser, {});
+  for (std::size_t i = 0; i < 360; ++i) {
+    EXPECT_NEAR((level.points_base[i] - flat.points_base[i]).norm(), 0, 1e-12);
+  }
 }
 
 }  // namespace

@@ -235,5 +235,45 @@ TEST(Tracker, AWellOverlaidMatchCorrectsAHeadingGlitchOfTheWheels) {
   EXPECT_LT(drive.largest_error_m, 0.05);
 }
 
+// Three level scans in the room, then one whose echoes are half the room's and half a ground
+// arc 1.5 m ahead (the scan plane on a root): matched, it overlays about half of its echoes.
+TrackStep TrackIntoGroundArc(const Tilt& tilt, std::size_t arc_points) {
+  TrackerOptions options;
+  KeyFrameMap map(options.key_frames, options.icp);
+  Tracker tracker(options, &map);
+  for (int i = 0; i < 3; ++i) {
+    const PlanarPose pose{1.0 + 0.1 * i, 0.5, 0};
+    tracker.Track(static_cast<std::size_t>(i),
+                  {static_cast<TimestampNs>(i) * 100'000'000, testing::RoomPoints(pose), pose,
+                   Tilt{}, true});
+  }
+  const PlanarPose pose{1.3, 0.5, 0};
+  Points2 points = testing::RoomPoints(pose);
+  const std::size_t room_points = points.size();
+  for (std::size_t k = 0; k < arc_points; ++k) {
+    const double a = -0.8 + 1.6 * static_cast<double>(k) / static_cast<double>(arc_points);
+    points.emplace_back(1.5 * std::cos(a), 1.5 * std::sin(a));
+  }
+  EXPECT_GT(room_points, 40u);
+  return tracker.Track(3, {300'000'000, std::move(points), pose, tilt, true});
+}
+
+TEST(Tracker, TiltedBeyondLevelOnlyAMatchOverlayingMostOfTheScanIsTheLasers) {
+  const double tilt_rad = 10 * std::numbers::pi / 180;
+  const std::size_t half = testing::RoomPoints({1.3, 0.5, 0}).size();
+  // Level, half the echoes on the map is a match (the thesis's ratio is 0.35) ...
+  const TrackStep level = TrackIntoGroundArc(Tilt{}, half);
+  EXPECT_EQ(level.routine, Routine::kGlobal);
+  EXPECT_NEAR(level.matching_ratio, 0.5, 0.1);
+  // ... tilted 10 degrees it is not, and the odometry places the scan ...
+  const TrackStep tilted = TrackIntoGroundArc(Tilt{0, tilt_rad}, half);
+  EXPECT_EQ(tilted.routine, Routine::kOdometryOnly);
+  EXPECT_NEAR(tilted.T_world_base.x_m, 0.3, 0.01);
+  // ... unless the match overlays most of the scan.
+  const TrackStep overlaid = TrackIntoGroundArc(Tilt{tilt_rad, 0}, half / 10);
+  EXPECT_EQ(overlaid.routine, Routine::kGlobal);
+  EXPECT_GE(overlaid.matching_ratio, 0.8);
+}
+
 }  // namespace
 }  // namespace littermap::reconstruct
