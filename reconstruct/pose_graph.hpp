@@ -21,6 +21,7 @@ struct PoseGraphEdge {
   PlanarPose T_from_to;
   Eigen::Matrix3d information = Eigen::Matrix3d::Identity();  // order (x, y, theta)
   bool loop = false;
+  bool camera = false;  // a loop from an RGB-D alignment (else from scan matching)
 };
 
 // Landmarks in the graph: 2D points, each sighting a range-bearing factor from its pose

@@ -44,6 +44,13 @@ void RgbdTrackerOptions::Validate() const {
         "RGB-D tracker: key-frame spacing, frame age, search radius and view angle must be > 0, "
         "max_candidates >= 1, min_confidence in [0, 1]");
   }
+  if (!(loop_min_path_separation_m > 0) || !(loop_search_radius_m > 0) ||
+      !(loop_search_radius_per_m >= 0) || !(loop_max_search_radius_m >= loop_search_radius_m) ||
+      !(loop_min_confidence >= 0 && loop_min_confidence <= 1)) {
+    throw UsageError(
+        "RGB-D tracker: loop path separation and search radius must be > 0, the radius's share "
+        "of the path >= 0, its maximum >= the radius, loop_min_confidence in [0, 1]");
+  }
 }
 
 RgbdTracker::RgbdTracker(const RgbdTrackerOptions& options, const RgbdCameraModel& camera,
@@ -126,6 +133,45 @@ std::optional<PlanarPose> RgbdTracker::AlignAt(const TrackInput& input, const Pl
   if (!frame->T_world_camera_aligned) return std::nullopt;
   const Eigen::Isometry3d T_world_base = *frame->T_world_camera_aligned * T_base_camera_.inverse();
   return Carry(ToPlanar(T_world_base), frame->T_odom_base, input.T_odom_base);
+}
+
+std::optional<CameraLoop> RgbdTracker::FindLoop(const TrackInput& input, const TrackStep& step,
+                                                const KeyFrameMap& map) {
+  Frame* frame = FrameFor(input.stamp_ns);
+  if (!options_.loops || frame == nullptr || key_frames_.empty()) return std::nullopt;
+  const auto& frames = map.key_frames();
+  const double path_m = frames[step.key_frame].path_length_m;
+  const Eigen::Isometry3d T_world_camera = CameraFromBase(
+      Carry(step.T_world_base, input.T_odom_base, frame->T_odom_base), input.tilt);
+  std::vector<std::pair<double, std::size_t>> candidates;
+  for (std::size_t i = 0; i < key_frames_.size(); ++i) {
+    const double separation_m = path_m - frames[key_frames_[i].map_key_frame].path_length_m;
+    if (separation_m < options_.loop_min_path_separation_m) break;  // taken in path order
+    const double radius_m =
+        std::min(options_.loop_max_search_radius_m,
+                 options_.loop_search_radius_m + options_.loop_search_radius_per_m * separation_m);
+    const Eigen::Isometry3d T_world_kf = WorldCamera(key_frames_[i], map);
+    const double distance_m = (T_world_kf.translation() - T_world_camera.translation()).norm();
+    if (distance_m <= radius_m && ViewAngle(T_world_kf, T_world_camera) <= options_.max_view_angle_rad) {
+      candidates.emplace_back(distance_m, i);
+    }
+  }
+  std::sort(candidates.begin(), candidates.end());
+  if (candidates.size() > static_cast<std::size_t>(options_.max_candidates)) {
+    candidates.resize(static_cast<std::size_t>(options_.max_candidates));
+  }
+  for (const auto& [distance_m, index] : candidates) {
+    const KeyFrame& key_frame = key_frames_[index];
+    ++stats_.loop_alignments;
+    const RgbdAlignment alignment = aligner_.Align(key_frame.features, FeaturesOf(frame));
+    if (!alignment.ok || alignment.confidence < options_.loop_min_confidence) continue;
+    const Eigen::Isometry3d T_world_base =
+        WorldCamera(key_frame, map) * alignment.T_keyframe_frame * T_base_camera_.inverse();
+    return CameraLoop{key_frame.map_key_frame,
+                      Carry(ToPlanar(T_world_base), frame->T_odom_base, input.T_odom_base),
+                      alignment.confidence};
+  }
+  return std::nullopt;
 }
 
 void RgbdTracker::OnTracked(const TrackInput& input, const TrackStep& step,

@@ -34,6 +34,16 @@ struct RgbdTrackerOptions {
   double max_view_angle_rad = 0.7;     // one, looking within this angle of its direction,
   int max_candidates = 3;              // nearest first, this many tried
   double min_confidence = 0.3;         // RgbdAlignment::confidence to accept
+  // Loops (FindLoop): RGB-D key frames at least loop_min_path_separation_m back along the path,
+  // whose camera is within loop_search_radius_m + loop_search_radius_per_m of that path (the
+  // drift it may have gathered; at most loop_max_search_radius_m) and looks within
+  // max_view_angle_rad; nearest first, max_candidates tried, accepted at loop_min_confidence.
+  bool loops = true;
+  double loop_min_path_separation_m = 10;
+  double loop_search_radius_m = 1.0;
+  double loop_search_radius_per_m = 0.03;
+  double loop_max_search_radius_m = 5;
+  double loop_min_confidence = 0.5;
   void Validate() const;
 };
 
@@ -54,6 +64,7 @@ struct RgbdTrackerStats {
   std::size_t key_frames = 0;
   std::size_t alignments = 0;  // frames aligned for routine 3
   std::size_t aligned = 0;     // of which accepted
+  std::size_t loop_alignments = 0;  // frames aligned to old key frames for a loop
 };
 
 class RgbdTracker final : public RgbdFallback {
@@ -67,6 +78,8 @@ class RgbdTracker final : public RgbdFallback {
   std::optional<PlanarPose> AlignAt(const TrackInput& input, const PlanarPose& predicted,
                                     const KeyFrameMap& map) override;
   void OnTracked(const TrackInput& input, const TrackStep& step, const KeyFrameMap& map) override;
+  std::optional<CameraLoop> FindLoop(const TrackInput& input, const TrackStep& step,
+                                     const KeyFrameMap& map) override;
 
   const std::vector<CameraPose>& camera_poses() const { return camera_poses_; }
   const RgbdTrackerStats& stats() const { return stats_; }

@@ -29,12 +29,12 @@ void WriteText(const std::filesystem::path& path, const std::string& text) {
 }
 
 void WriteRoutines(const std::filesystem::path& path, const std::vector<ScanRecord>& scans) {
-  std::string text = "time,routine,matching_ratio\n";
+  std::string text = "time,routine,matching_ratio,landmark_sightings\n";
   char ratio[32];
   for (const ScanRecord& scan : scans) {
     std::snprintf(ratio, sizeof ratio, "%.4f", scan.matching_ratio);
     text += FormatTumStamp(scan.stamp_ns) + ',' + std::string(RoutineName(scan.routine)) + ',' +
-            ratio + '\n';
+            ratio + ',' + std::to_string(scan.landmark_sightings) + '\n';
   }
   WriteText(path, text);
 }
@@ -117,7 +117,11 @@ std::string QualityJson(const SlamQuality& quality, const ReconstructionResult& 
     json["rgbd"] = {{"frames", stats.frames},
                     {"key_frames", stats.key_frames},
                     {"alignments", stats.alignments},
-                    {"aligned", stats.aligned}};
+                    {"aligned", stats.aligned},
+                    {"loop_alignments", stats.loop_alignments},
+                    {"loops_found", quality.camera_loops_found},
+                    {"loops_accepted", quality.camera_loops_accepted},
+                    {"loops_rejected", quality.camera_loops_rejected}};
   }
   json["run_time_s"] = result.run_time_s;
   json["scans_per_s"] = result.scans_per_s;

@@ -1,7 +1,8 @@
 #pragma once
 // The files of a reconstructed run (DESIGN.md, "The command line"): trajectory.tum (a pose for
 // every scan, optimised), keyframes.tum, map.pgm + map.yaml (ROS map_server), map.png (preview),
-// routines.csv (per scan: time, routine, matching ratio; thesis fig. 2.5.2.1) and quality.json;
+// routines.csv (per scan: time, routine, matching ratio, thesis fig. 2.5.2.1; and the landmark
+// sightings holding its key frame in the graph) and quality.json;
 // with the RGB-D routine also camera.tum (the camera's optical frame in 3D at every frame
 // tracked, from the optimised poses) and camera_sources.csv (laser / rgbd / odometry per frame).
 

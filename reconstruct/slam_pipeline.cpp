@@ -56,6 +56,7 @@ SlamPipeline::SlamPipeline(const SlamOptions& options, const PlanarPose& T_base_
                            RgbdFallback* rgbd)
     : options_((options.Validate(), options)),
       T_base_laser_(T_base_laser),
+      rgbd_(rgbd),
       map_(options.tracker.key_frames, options.tracker.icp),
       tracker_(options.tracker, &map_, rgbd),
       loop_closer_(options.loops),
@@ -149,6 +150,7 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdomet
     if (options_.loop_closure && step.key_frame > 0) {
       CloseLoops(step.key_frame);
       if (options_.landmarks) CloseLandmarkLoops(step.key_frame);
+      if (rgbd_ != nullptr) CloseCameraLoop(input, step);
     }
   }
 }
@@ -213,6 +215,39 @@ void SlamPipeline::CloseLoops(std::size_t key_frame) {
   unchecked_loops_.push_back(edges_.size() - 1);
   last_loop_key_frame_ = key_frame;
   any_loop_ = true;
+  Optimise();
+}
+
+void SlamPipeline::CloseCameraLoop(const TrackInput& input, const TrackStep& step) {
+  const std::size_t key_frame = step.key_frame;
+  if (last_camera_loop_key_frame_ &&
+      key_frame < *last_camera_loop_key_frame_ + options_.loop_cooldown_key_frames) {
+    return;
+  }
+  const std::optional<CameraLoop> loop = rgbd_->FindLoop(input, step, map_);
+  if (!loop) return;
+  ++quality_.camera_loops_found;
+  const auto& frames = map_.key_frames();
+  const double path_m = frames[key_frame].path_length_m - frames[loop->key_frame].path_length_m;
+  const PlanarPose correction = Between(frames[key_frame].T_world_base, loop->T_world_base);
+  if (std::hypot(correction.x_m, correction.y_m) >
+          options_.loops.max_correction_m + options_.loops.max_correction_per_m * path_m ||
+      std::abs(correction.theta_rad) >
+          options_.loops.max_correction_rad + options_.loops.max_correction_rad_per_m * path_m) {
+    ++quality_.camera_loops_rejected;
+    return;
+  }
+  PoseGraphEdge edge;
+  edge.from = loop->key_frame;
+  edge.to = key_frame;
+  edge.T_from_to = Between(frames[loop->key_frame].T_world_base, loop->T_world_base);
+  edge.information =
+      DiagonalInformation(options_.tracker.rgbd_sigma_m, options_.tracker.rgbd_sigma_rad);
+  edge.loop = true;
+  edge.camera = true;
+  edges_.push_back(edge);
+  unchecked_loops_.push_back(edges_.size() - 1);
+  last_camera_loop_key_frame_ = key_frame;
   Optimise();
 }
 
@@ -335,9 +370,9 @@ void SlamPipeline::Optimise() {
     if (!result.usable || !LoopFits(edge, poses, options_)) {
       edge.information.setZero();  // marked for removal
       removed = true;
-      ++quality_.loops_rejected_after_optimisation;
+      ++(edge.camera ? quality_.camera_loops_rejected : quality_.loops_rejected_after_optimisation);
     } else {
-      ++quality_.loops_accepted;
+      ++(edge.camera ? quality_.camera_loops_accepted : quality_.loops_accepted);
     }
   }
   unchecked_loops_.clear();
@@ -357,6 +392,9 @@ void SlamPipeline::Finish() {
   if (!unchecked_loops_.empty() || !landmark_links_.empty()) Optimise();
   PruneFinalLoops();
   quality_.landmarks = landmark_map_.graph_landmarks();
+  for (const LandmarkTerm& term : BuildLandmarkTerms().terms) {
+    ++scans_[map_.key_frames()[term.pose].scan_index].landmark_sightings;
+  }
   if (options_.alignment_mode == AlignmentMode::kOn ||
       (options_.alignment_mode == AlignmentMode::kAuto && !tilted_)) {
     AlignKeyFrames();
@@ -398,12 +436,20 @@ void SlamPipeline::Finish() {
 void SlamPipeline::PruneFinalLoops() {
   std::vector<PlanarPose> poses = map_.Poses();
   LandmarkTerms terms = BuildLandmarkTerms();
+  const auto camera_loops = [&] {
+    return static_cast<std::size_t>(
+        std::count_if(edges_.begin(), edges_.end(), [](const PoseGraphEdge& e) { return e.camera; }));
+  };
+  const std::size_t camera_loops_before = camera_loops();
   const LoopPruning pruning =
       PruneLoops(&poses, &edges_, options_.max_final_loop_chi2, options_.graph, &terms);
   if (pruning.removed == 0) return;
   // Edges removed before an unusable solution stay removed; the poses are the last usable ones.
-  quality_.loops_accepted -= pruning.removed;
-  quality_.loops_rejected_after_optimisation += pruning.removed;
+  const std::size_t camera_removed = camera_loops_before - camera_loops();
+  quality_.camera_loops_accepted -= camera_removed;
+  quality_.camera_loops_rejected += camera_removed;
+  quality_.loops_accepted -= pruning.removed - camera_removed;
+  quality_.loops_rejected_after_optimisation += pruning.removed - camera_removed;
   quality_.optimisations += pruning.removed;
   if (pruning.usable) quality_.final_cost = pruning.final_cost;
   ApplyPoses(poses);

@@ -86,6 +86,9 @@ struct ScanRecord {
   std::optional<PlanarPose> T_odom_base;  // the odometry used (gyro-turned), for comparisons
   bool odometry_used = false;      // the tracker predicted from the odometry since the last scan
   bool heading_from_gyro = false;  // and that odometry's turn is a gyro's
+  // Landmark sightings of this scan's key frame that hold it in the final pose graph (range-
+  // bearing factors; only scans that made a key frame, once landmarks closed a loop).
+  std::size_t landmark_sightings = 0;
 };
 
 struct SlamQuality {
@@ -118,6 +121,11 @@ struct SlamQuality {
   std::size_t landmark_loops_found = 0;
   std::size_t landmark_loops_accepted = 0;
   std::size_t landmark_loops_rejected = 0;  // after optimisation: the merged sightings did not fit
+  // Loops from camera frames aligned to RGB-D key frames long before (RgbdFallback::FindLoop):
+  // rejected beyond the drift the path allows or when the optimised graph cannot satisfy them.
+  std::size_t camera_loops_found = 0;
+  std::size_t camera_loops_accepted = 0;
+  std::size_t camera_loops_rejected = 0;
   ScanAlignmentResult alignment;            // the final scan alignment, if it ran
 };
 
@@ -144,6 +152,9 @@ class SlamPipeline {
   // Place recognition on the landmarks' constellation (LandmarkMap::FindLoop), verified by the
   // optimised graph.
   void CloseLandmarkLoops(std::size_t key_frame);
+  // A loop from the camera frame at a new key frame to an old RGB-D key frame, checked against
+  // the drift the path allows and then by the optimised graph like a scan-matched loop.
+  void CloseCameraLoop(const TrackInput& input, const TrackStep& step);
   // Graph distances from a key frame over the pose graph's edges and the landmark loops.
   std::vector<double> GraphDistancesFrom(std::size_t key_frame) const;
   // The landmarks in the graph as Ceres terms, and the landmark each term's index maps from.
@@ -165,6 +176,7 @@ class SlamPipeline {
 
   SlamOptions options_;
   PlanarPose T_base_laser_;
+  RgbdFallback* rgbd_ = nullptr;
   KeyFrameMap map_;
   Tracker tracker_;
   LoopCloser loop_closer_;
@@ -193,6 +205,7 @@ class SlamPipeline {
   std::vector<std::vector<MapPoint>> map_points_base_;
   std::size_t last_loop_key_frame_ = 0;
   bool any_loop_ = false;
+  std::optional<std::size_t> last_camera_loop_key_frame_;  // its own cooldown
   double last_wide_search_path_m_ = 0;  // path length at the last wide loop search
   std::optional<TimestampNs> last_stamp_ns_;
   SlamQuality quality_;

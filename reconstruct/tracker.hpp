@@ -119,6 +119,13 @@ struct TrackStep {
 
 // Routine 3: a pose for a scan the laser could not place, from the RGB-D aligner (thesis 2.4,
 // reconstruct/rgbd_tracker.hpp), and the outcome of every scan (to take RGB-D key frames).
+// A camera frame that matched an RGB-D key frame from much earlier on the path: a loop.
+struct CameraLoop {
+  std::size_t key_frame = 0;  // the 2D key frame the old RGB-D key frame hangs on
+  PlanarPose T_world_base;    // the base pose at the scan, as the alignment puts it
+  double confidence = 0;      // RgbdAlignment::confidence
+};
+
 class RgbdFallback {
  public:
   virtual ~RgbdFallback() = default;
@@ -127,6 +134,13 @@ class RgbdFallback {
                                             const KeyFrameMap& map) = 0;
   virtual void OnTracked(const TrackInput& input, const TrackStep& step,
                          const KeyFrameMap& map) = 0;
+  // After a scan made a key frame: a loop from the camera frame at its time to an RGB-D key frame
+  // taken long before, if one matches (none by default).
+  virtual std::optional<CameraLoop> FindLoop(const TrackInput& input, const TrackStep& step,
+                                             const KeyFrameMap& map) {
+    (void)input, (void)step, (void)map;
+    return std::nullopt;
+  }
 };
 
 // How a pose was predicted: odometry (its heading from the gyro or not) or constant velocity.

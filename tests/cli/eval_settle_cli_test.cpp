@@ -11,19 +11,14 @@
 #include "support/carmen_import.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
+#include "support/trajectory_ate.hpp"
 
 namespace littermap {
 namespace {
 
 using testing::Quote;
+using testing::Ate;
 using testing::RunLittermap;
-
-double Ate(const std::filesystem::path& estimate, const std::filesystem::path& reference) {
-  const auto eval =
-      RunLittermap("eval trajectory " + Quote(estimate) + " " + Quote(reference) + " --json");
-  EXPECT_EQ(eval.exit_code, 0) << eval.output;
-  return nlohmann::json::parse(eval.output)["ate_rmse_m"].get<double>();
-}
 
 TEST(EvalSettleCli, TheCsailReferenceMovesADecimetreLittermapsTrajectoryHardly) {
   testing::TempDir dir;

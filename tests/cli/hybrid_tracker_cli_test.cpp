@@ -13,23 +13,18 @@
 
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
+#include "support/trajectory_ate.hpp"
 
 namespace littermap {
 namespace {
 
 using testing::Quote;
+using testing::Ate;
 using testing::RunLittermap;
 
 nlohmann::json ReadJson(const std::filesystem::path& path) {
   std::ifstream in(path);
   return nlohmann::json::parse(in);
-}
-
-double Ate(const std::filesystem::path& estimate, const std::filesystem::path& truth) {
-  const auto eval =
-      RunLittermap("eval trajectory " + Quote(estimate) + " " + Quote(truth) + " --json");
-  EXPECT_EQ(eval.exit_code, 0) << eval.output;
-  return nlohmann::json::parse(eval.output).at("ate_rmse_m").get<double>();
 }
 
 // One simulation for all checks: ctest runs every test in its own process.

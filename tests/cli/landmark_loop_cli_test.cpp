@@ -12,11 +12,13 @@
 
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
+#include "support/trajectory_ate.hpp"
 
 namespace littermap {
 namespace {
 
 using testing::Quote;
+using testing::Ate;
 using testing::RunLittermap;
 
 constexpr const char* kWorld = R"(name: lanes
@@ -41,13 +43,6 @@ route:
   speed_mps: 1.0
 )";
 
-double Ate(const std::filesystem::path& estimate, const std::filesystem::path& truth) {
-  const auto eval =
-      RunLittermap("eval trajectory " + Quote(estimate) + " " + Quote(truth) + " --json");
-  EXPECT_EQ(eval.exit_code, 0) << eval.output;
-  return nlohmann::json::parse(eval.output).at("ate_rmse_m").get<double>();
-}
-
 TEST(LandmarkLoopCli, TrunksCloseTheLoopBetweenLanes) {
   testing::TempDir d;
   std::ofstream(d / "lanes.yaml") << kWorld;
@@ -68,6 +63,19 @@ TEST(LandmarkLoopCli, TrunksCloseTheLoopBetweenLanes) {
   EXPECT_GE(landmarks.at("in_graph").get<int>(), 40);
   EXPECT_GE(landmarks.at("loops_accepted").get<int>(), 1);
   EXPECT_LE(landmarks.at("loops_accepted").get<int>(), landmarks.at("loops_found").get<int>());
+  // routines.csv says which scans the landmarks hold in the graph: key frames' scans only.
+  std::ifstream routines(d / "run" / "routines.csv");
+  std::string line;
+  std::getline(routines, line);
+  EXPECT_EQ(line, "time,routine,matching_ratio,landmark_sightings");
+  std::size_t held = 0, sightings = 0;
+  while (std::getline(routines, line)) {
+    const std::size_t count = std::stoul(line.substr(line.rfind(',') + 1));
+    held += count > 0;
+    sightings += count;
+  }
+  EXPECT_GE(held, 100u);
+  EXPECT_GE(sightings, 4 * held);
 
   const auto truth = d / "truth" / "trajectory.tum";
   const double ate = Ate(d / "run" / "trajectory.tum", truth);

@@ -43,7 +43,7 @@ TEST(ReconstructCli, OrebroRunDirectoryAndEvaluation) {
     EXPECT_TRUE(quality.contains(key)) << key;
   }
   const std::string routines = Slurp(dir / "run" / "routines.csv");
-  EXPECT_EQ(routines.rfind("time,routine,matching_ratio\n", 0), 0u);
+  EXPECT_EQ(routines.rfind("time,routine,matching_ratio,landmark_sightings\n", 0), 0u);
   EXPECT_EQ(std::count(routines.begin(), routines.end(), '\n'), 238);
 
   const auto eval = RunLittermap("eval trajectory " + Quote(dir / "run" / "trajectory.tum") + " " +

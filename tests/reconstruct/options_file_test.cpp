@@ -41,7 +41,10 @@ TEST(OptionsFile, SetsTheNamedOptions) {
                          "rgbd_orb_fast_threshold: 9\n"
                          "loop_closure: false\n"
                          "scan_alignment: off\n"
-                         "alignment_point_sigma_m: 0.02\n"),
+                         "alignment_point_sigma_m: 0.02\n"
+                         "rgbd_loops: false\n"
+                         "tilted_min_matching_ratio: 0.9\n"
+                         "max_level_tilt_rad: 0.2\n"),
                    &options);
   EXPECT_EQ(options.slam.tracker.min_matching_ratio, 0.5);
   EXPECT_FALSE(options.rgbd);
@@ -55,6 +58,9 @@ TEST(OptionsFile, SetsTheNamedOptions) {
   EXPECT_FALSE(options.slam.loop_closure);
   EXPECT_EQ(options.slam.alignment_mode, AlignmentMode::kOff);
   EXPECT_EQ(options.slam.alignment.point_sigma_m, 0.02);
+  EXPECT_FALSE(options.rgbd_tracker.loops);
+  EXPECT_EQ(options.slam.tracker.tilted_min_matching_ratio, 0.9);
+  EXPECT_EQ(options.slam.tracker.max_level_tilt_rad, 0.2);
 }
 
 TEST(OptionsFile, AnEmptyFileKeepsTheDefaults) {

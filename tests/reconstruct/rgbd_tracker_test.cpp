@@ -116,6 +116,49 @@ TEST_F(RgbdTrackerTest, NoPoseWithoutAKeyFrameOrACurrentFrame) {
                              kKeyFramePose, map_));
 }
 
+// After a 20 m drive the robot is back at the desk, its tracked pose 0.3 m and 2 degrees off
+// (drift): the camera frame matches the RGB-D key frame of the first visit, and the loop puts the
+// base where the alignment says, relative to that key frame.
+TEST_F(RgbdTrackerTest, AFrameThatMatchesAKeyFrameFromFarBackAlongThePathIsALoop) {
+  RgbdTracker tracker({}, camera_, BaseCamera());
+  TrackFirstByLaser(&tracker);
+  const PlanarPose drifted{kKeyFramePose.x_m + 0.2, kKeyFramePose.y_m - 0.22,
+                           kKeyFramePose.theta_rad + 0.035};
+  map_.Add({1, kStamp2, drifted, {{1, 0}, {1, 1}, {1, -1}, {2, 0}}, 20.0, {}});
+  tracker.AddFrame(frame2_, std::nullopt);
+  TrackStep step;
+  step.routine = Routine::kGlobal;
+  step.T_world_base = drifted;
+  step.key_frame = 1;
+  step.new_key_frame = true;
+  const TrackInput input{kStamp2, {}, std::nullopt, std::nullopt};
+  const auto loop = tracker.FindLoop(input, step, map_);
+  ASSERT_TRUE(loop);
+  EXPECT_EQ(loop->key_frame, 0u);
+  EXPECT_GE(loop->confidence, 0.5);
+  ExpectNear(loop->T_world_base, Expected(kKeyFramePose));
+  EXPECT_EQ(tracker.stats().loop_alignments, 1u);
+
+  // The same frames 5 m of path apart are the robot passing by, not a loop ...
+  RgbdTracker near({}, camera_, BaseCamera());
+  KeyFrameMap short_path{KeyFrameMapOptions{}, IcpOptions{}};
+  short_path.Add({0, kStamp1, kKeyFramePose, {{1, 0}, {1, 1}, {1, -1}, {2, 0}}, 0, {}});
+  near.AddFrame(frame1_, std::nullopt);
+  TrackStep first;
+  first.routine = Routine::kGlobal;
+  first.T_world_base = kKeyFramePose;
+  near.OnTracked({kStamp1, {}, std::nullopt, std::nullopt}, first, short_path);
+  short_path.Add({1, kStamp2, drifted, {{1, 0}, {1, 1}, {1, -1}, {2, 0}}, 5.0, {}});
+  near.AddFrame(frame2_, std::nullopt);
+  EXPECT_FALSE(near.FindLoop(input, step, short_path));
+  // ... and with the drift beyond what 20 m of path allows (1 m + 3 %), nothing is tried.
+  const PlanarPose far{kKeyFramePose.x_m + 2.5, kKeyFramePose.y_m, kKeyFramePose.theta_rad};
+  step.T_world_base = far;
+  map_.SetPoses({kKeyFramePose, far});
+  EXPECT_FALSE(tracker.FindLoop(input, step, map_));
+  EXPECT_EQ(tracker.stats().loop_alignments, 1u);
+}
+
 TEST_F(RgbdTrackerTest, FramesThePoseOfWhichNothingMeasuredMakeNoKeyFrames) {
   RgbdTracker tracker({}, camera_, BaseCamera());
   tracker.AddFrame(frame1_, std::nullopt);
