@@ -88,8 +88,9 @@ void RegisterSimulateCommand(CLI::App& app, CliContext& context) {
   simulate
       ->add_option("--litter-day", request->litter_day,
                    "Survey the park on this day: the world's litter changed day by day "
-                   "(litter.daily_pickup_fraction picked up, litter.daily_new dropped)")
-      ->check(CLI::NonNegativeNumber);
+                   "(litter.daily_pickup_fraction picked up, litter.daily_new dropped); at most "
+                   "3650")
+      ->check(CLI::Range(0, sim::kMaxLitterDay));
   simulate->add_option("--contact-sheet", request->contact_sheet,
                        "Also write a PNG of sampled colour, depth and laser frames of the bag");
   simulate->callback([request, &context] {

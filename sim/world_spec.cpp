@@ -17,13 +17,20 @@ void Check(const YamlFields& fields, const char* key, bool ok, const std::string
   if (!ok) fields.Fail(key, what);
 }
 
+// A count of things in the world, bounded so that a typo (1e9 trees) is refused when the file is
+// read instead of running until the memory is gone. The bounds hold a 2 km x 2 km world.
+void ReadCount(YamlFields& fields, const char* key, int& value, int max) {
+  fields.Read(key, value);
+  Check(fields, key, value <= max, "must be at most " + std::to_string(max));
+}
+
 void ReadTerrain(YamlFields fields, TerrainSpec& terrain) {
   fields.Read("hill_amplitude_m", terrain.hill_amplitude_m);
   fields.Read("hill_wavelength_m", terrain.hill_wavelength_m);
-  fields.Read("roots", terrain.roots);
+  ReadCount(fields, "roots", terrain.roots, kMaxRoots);
   fields.Read("root_height_m", terrain.root_height_m);
-  fields.Read("leaf_patches", terrain.leaf_patches);
-  fields.Read("gravel_patches", terrain.gravel_patches);
+  ReadCount(fields, "leaf_patches", terrain.leaf_patches, kMaxPatches);
+  ReadCount(fields, "gravel_patches", terrain.gravel_patches, kMaxPatches);
   fields.Read("patch_radius_m", terrain.patch_radius_m);
   for (YamlFields& path_fields : fields.Children("paths")) {
     PathSpec path;
@@ -38,37 +45,36 @@ void ReadTerrain(YamlFields fields, TerrainSpec& terrain) {
 }
 
 void ReadStructure(YamlFields fields, StructureSpec& s) {
-  fields.Read("trees", s.trees);
-  fields.Read("rocks", s.rocks);
-  fields.Read("benches", s.benches);
-  fields.Read("bins", s.bins);
-  fields.Read("fence_segments", s.fence_segments);
-  fields.Read("bushes", s.bushes);
-  fields.Read("open_areas", s.open_areas);
+  ReadCount(fields, "trees", s.trees, kMaxStructures);
+  ReadCount(fields, "rocks", s.rocks, kMaxStructures);
+  ReadCount(fields, "benches", s.benches, kMaxStructures);
+  ReadCount(fields, "bins", s.bins, kMaxStructures);
+  ReadCount(fields, "fence_segments", s.fence_segments, kMaxStructures);
+  ReadCount(fields, "bushes", s.bushes, kMaxStructures);
+  ReadCount(fields, "open_areas", s.open_areas, kMaxPatches);
   fields.Read("open_area_radius_m", s.open_area_radius_m);
   fields.Read("route_clearance_m", s.route_clearance_m);
   fields.Finish();
 }
 
 void ReadLitter(YamlFields fields, LitterSpec& litter) {
-  fields.Read("count", litter.count);
+  ReadCount(fields, "count", litter.count, kMaxItems);
   fields.Read("hotspot_fraction", litter.hotspot_fraction);
   fields.Read("hotspot_sigma_m", litter.hotspot_sigma_m);
   fields.Read("half_hidden_fraction", litter.half_hidden_fraction);
   fields.Read("daily_pickup_fraction", litter.daily_pickup_fraction);
-  fields.Read("daily_new", litter.daily_new);
+  ReadCount(fields, "daily_new", litter.daily_new, kMaxItems);
   fields.Read("class_weights", litter.class_weights, kLitterClasses);
   Check(fields, "hotspot_fraction", litter.hotspot_fraction >= 0 && litter.hotspot_fraction <= 1,
         "must be in [0, 1]");
   Check(fields, "daily_pickup_fraction",
         litter.daily_pickup_fraction >= 0 && litter.daily_pickup_fraction <= 1,
         "must be in [0, 1]");
-  Check(fields, "daily_new", litter.daily_new >= 0, "must be >= 0");
   fields.Finish();
 }
 
 void ReadNatural(YamlFields fields, NaturalSpec& natural) {
-  fields.Read("count", natural.count);
+  ReadCount(fields, "count", natural.count, kMaxItems);
   fields.Read("class_weights", natural.class_weights, kNaturalClasses);
   fields.Finish();
 }

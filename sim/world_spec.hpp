@@ -32,6 +32,13 @@ struct TerrainSpec {
   double patch_radius_m = 3;
 };
 
+// Bounds on the counts of a world file (checked when it is read; park_small.yaml lists them).
+inline constexpr int kMaxStructures = 20000;  // trees, rocks, benches, bins, fences, bushes each
+inline constexpr int kMaxItems = 20000;       // litter.count, litter.daily_new, natural.count
+inline constexpr int kMaxRoots = 100000;      // terrain.roots
+inline constexpr int kMaxPatches = 1000;      // leaf and gravel patches, open areas
+inline constexpr int kMaxLitterDay = 3650;    // simulate --litter-day: ten years of days
+
 struct StructureSpec {
   int trees = 30;
   int rocks = 10;

@@ -96,6 +96,7 @@ void YamlFields::Read(const char* key, std::vector<Eigen::Vector2d>& points) {
     } catch (const YAML::Exception&) {
       Fail(item, "expected two numbers");
     }
+    if (!points.back().allFinite()) Fail(item, "must be finite");
   }
 }
 
@@ -114,7 +115,9 @@ void YamlFields::Read(const char* key, std::map<std::string, double>& weights,
     } catch (const YAML::Exception&) {
       Fail(std::string(key) + "." + name, "expected a number");
     }
-    if (!(weight >= 0)) Fail(std::string(key) + "." + name, "must not be negative");
+    if (!(weight >= 0) || !std::isfinite(weight)) {
+      Fail(std::string(key) + "." + name, "must be finite and not negative");
+    }
     weights[name] = weight;
   }
 }

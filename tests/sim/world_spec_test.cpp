@@ -65,6 +65,21 @@ TEST(WorldSpec, CameraAndTruthSections) {
             "w.yaml: truth.mask_every_n_frames: must not be negative");
 }
 
+TEST(WorldSpec, CountsAreBoundedWhenTheFileIsRead) {
+  // 1e9 trees or items ran until the memory was gone; they are refused with the bound.
+  EXPECT_EQ(ErrorOf(std::string(kRoute) + "structure: {trees: 1000000000}\n"),
+            "w.yaml: structure.trees: must be at most 20000");
+  EXPECT_EQ(ErrorOf(std::string(kRoute) + "litter: {count: 20001}\n"),
+            "w.yaml: litter.count: must be at most 20000");
+  EXPECT_EQ(ErrorOf(std::string(kRoute) + "natural: {count: 1000000000}\n"),
+            "w.yaml: natural.count: must be at most 20000");
+  EXPECT_EQ(ErrorOf(std::string(kRoute) + "terrain: {roots: 1000000000}\n"),
+            "w.yaml: terrain.roots: must be at most 100000");
+  EXPECT_EQ(ErrorOf(std::string(kRoute) + "litter: {daily_new: -1}\n"),
+            "w.yaml: litter.daily_new: must not be negative");
+  EXPECT_EQ(ErrorOf(std::string(kRoute) + "structure: {trees: 20000}\n"), "no error");
+}
+
 TEST(WorldSpec, UnknownKeysNameFileAndKey) {
   EXPECT_EQ(ErrorOf(std::string(kRoute) + "sise_x_m: 3\n"), "w.yaml: sise_x_m: unknown key");
   EXPECT_EQ(ErrorOf(std::string(kRoute) + "robot: {laser: {rate: 10}}\n"),
@@ -82,6 +97,12 @@ TEST(WorldSpec, BadValuesNameTheKey) {
             "w.yaml: robot.laser.preset: must be urg-04lx or utm-30lx");
   EXPECT_EQ(ErrorOf("route: {waypoints_m: [[0, 0]]}\n"),
             "w.yaml: route.waypoints_m: needs at least two points");
+  EXPECT_EQ(ErrorOf("route: {waypoints_m: [[0, 0], [.nan, 5]]}\n"),
+            "w.yaml: route.waypoints_m[1]: must be finite");
+  EXPECT_EQ(ErrorOf("route: {waypoints_m: [[0, 0], [5, .inf]]}\n"),
+            "w.yaml: route.waypoints_m[1]: must be finite");
+  EXPECT_EQ(ErrorOf(std::string(kRoute) + "litter: {class_weights: {can: .inf}}\n"),
+            "w.yaml: litter.class_weights.can: must be finite and not negative");
   EXPECT_EQ(ErrorOf("route: {waypoints_m: [[0, 0], [5, 0]], come_home: maybe}\n"),
             "w.yaml: route.come_home: expected true or false");
   EXPECT_NE(ErrorOf("[1, 2"), "no error");
