@@ -62,7 +62,8 @@ DriveResult DriveRoute(const std::vector<Eigen::Vector2d>& route, const DriveOpt
   const double dt = 1.0 / options.rate_hz;
   const Eigen::Vector2d first_leg = route[1] - route[0];
   RobotState state;
-  state.pose = {route[0].x(), route[0].y(), std::atan2(first_leg.y(), first_leg.x())};
+  const double start_heading_rad = std::atan2(first_leg.y(), first_leg.x());
+  state.pose = {route[0].x(), route[0].y(), start_heading_rad};
   std::size_t target = 1;
   // Generous cap: the route length at a tenth of the speed.
   double length_m = 0;
@@ -75,14 +76,19 @@ DriveResult DriveRoute(const std::vector<Eigen::Vector2d>& route, const DriveOpt
     while (to_goal.norm() < options.waypoint_tolerance_m && target + 1 < route.size()) {
       to_goal = route[++target] - Eigen::Vector2d(state.pose.x_m, state.pose.y_m);
     }
-    if (to_goal.norm() < options.waypoint_tolerance_m) {
+    const bool arrived = to_goal.norm() < options.waypoint_tolerance_m;
+    const double docking_error = WrapAngle(start_heading_rad - state.pose.theta_rad);
+    if (arrived && (!options.dock || (std::abs(docking_error) < options.dock_tolerance_rad &&
+                                      state.linear_mps == 0))) {
       result.reached_goal = true;
       break;
     }
-    const double error = WrapAngle(std::atan2(to_goal.y(), to_goal.x()) - state.pose.theta_rad);
+    const double error =
+        arrived ? docking_error
+                : WrapAngle(std::atan2(to_goal.y(), to_goal.x()) - state.pose.theta_rad);
     // Slow down for the last waypoint so the robot stops on it.
     const double wanted =
-        std::abs(error) > options.turn_in_place_rad
+        arrived || std::abs(error) > options.turn_in_place_rad
             ? 0.0
             : std::min(options.speed_mps,
                        target + 1 == route.size() ? to_goal.norm() + 0.05 : options.speed_mps);

@@ -36,6 +36,9 @@ struct DriveOptions {
   double max_duration_s = std::numeric_limits<double>::infinity();
   double waypoint_tolerance_m = 0.15;
   double turn_in_place_rad = 0.5;  // heading error above which the robot stops and turns
+  // Docking: at the last waypoint the robot turns in place until it faces the way it left.
+  bool dock = false;
+  double dock_tolerance_rad = 0.02;
 };
 
 struct DriveResult {

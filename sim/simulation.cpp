@@ -50,6 +50,7 @@ Simulation::Simulation(const WorldSpec& spec, const SimulationOptions& options)
   drive.max_angular_speed_radps = spec.robot.max_angular_speed_radps;
   drive.rate_hz = spec.robot.odometry.rate_hz;
   drive.max_duration_s = options.max_duration_s;
+  drive.dock = spec.DrivenRoute().come_home;
   drive_ = DriveRoute(world_->route_m, drive);
   std::vector<PlanarPose> truth;
   truth.reserve(drive_.states.size());

@@ -69,11 +69,20 @@ TEST(Route, ComeHomeEndsTheSurveyWhereItBegan) {
   // A route that already ends at the dock gets no leg of zero length.
   waypoints.waypoints_m.push_back({0, 0});
   EXPECT_EQ(PlanRoute(waypoints).size(), 4u);
-  // Driven, the survey stops at the dock.
-  const DriveResult drive = DriveRoute(PlanRoute(lanes), {});
-  ASSERT_TRUE(drive.reached_goal);
-  EXPECT_NEAR(drive.states.back().pose.x_m, 0.5, 0.15);
-  EXPECT_NEAR(drive.states.back().pose.y_m, 2, 0.15);
+  // Driven, the survey stops at the dock; docking, the robot then turns in place to face the way
+  // it left (east), so it ends where and as it began.
+  DriveOptions docking;
+  docking.dock = true;
+  for (const bool dock : {false, true}) {
+    docking.dock = dock;
+    const DriveResult drive = DriveRoute(PlanRoute(lanes), docking);
+    ASSERT_TRUE(drive.reached_goal);
+    const PlanarPose& end = drive.states.back().pose;
+    EXPECT_NEAR(end.x_m, 0.5, 0.15);
+    EXPECT_NEAR(end.y_m, 2, 0.15);
+    // It arrives heading south (down the polygon's edge from the last lane).
+    EXPECT_NEAR(std::abs(end.theta_rad), dock ? 0 : std::numbers::pi / 2, dock ? 0.02 : 0.2);
+  }
 }
 
 TEST(Route, BumpsTiltTheRobotAtTheConfiguredPlaces) {
