@@ -91,6 +91,27 @@ Eigen::Isometry3d RgbdTracker::CameraFromBase(const PlanarPose& T_world_base,
   return LiftPose(T_world_base, tilt) * T_base_camera_;
 }
 
+std::vector<std::size_t> RgbdTracker::NearestKeyFrames(
+    const Eigen::Isometry3d& T_world_camera, const KeyFrameMap& map, std::size_t count,
+    const std::function<double(std::size_t)>& radius_m) const {
+  std::vector<std::pair<double, std::size_t>> candidates;
+  for (std::size_t i = 0; i < count; ++i) {
+    const Eigen::Isometry3d T_world_kf = WorldCamera(key_frames_[i], map);
+    const double distance_m = (T_world_kf.translation() - T_world_camera.translation()).norm();
+    if (distance_m <= radius_m(i) &&
+        ViewAngle(T_world_kf, T_world_camera) <= options_.max_view_angle_rad) {
+      candidates.emplace_back(distance_m, i);
+    }
+  }
+  std::sort(candidates.begin(), candidates.end());
+  std::vector<std::size_t> nearest;
+  for (const auto& [distance_m, index] : candidates) {
+    if (nearest.size() == static_cast<std::size_t>(options_.max_candidates)) break;
+    nearest.push_back(index);
+  }
+  return nearest;
+}
+
 Eigen::Isometry3d RgbdTracker::WorldCamera(const KeyFrame& key_frame,
                                            const KeyFrameMap& map) const {
   return LiftPose(map.key_frames()[key_frame.map_key_frame].T_world_base, std::nullopt) *
@@ -106,21 +127,9 @@ std::optional<PlanarPose> RgbdTracker::AlignAt(const TrackInput& input, const Pl
     ++stats_.alignments;
     const Eigen::Isometry3d T_world_camera_predicted =
         CameraFromBase(Carry(predicted, input.T_odom_base, frame->T_odom_base), input.tilt);
-    std::vector<std::pair<double, std::size_t>> candidates;
-    for (std::size_t i = 0; i < key_frames_.size(); ++i) {
-      const Eigen::Isometry3d T_world_kf = WorldCamera(key_frames_[i], map);
-      const double distance_m =
-          (T_world_kf.translation() - T_world_camera_predicted.translation()).norm();
-      if (distance_m <= options_.search_radius_m &&
-          ViewAngle(T_world_kf, T_world_camera_predicted) <= options_.max_view_angle_rad) {
-        candidates.emplace_back(distance_m, i);
-      }
-    }
-    std::sort(candidates.begin(), candidates.end());
-    if (candidates.size() > static_cast<std::size_t>(options_.max_candidates)) {
-      candidates.resize(static_cast<std::size_t>(options_.max_candidates));
-    }
-    for (const auto& [distance_m, index] : candidates) {
+    for (std::size_t index :
+         NearestKeyFrames(T_world_camera_predicted, map, key_frames_.size(),
+                          [&](std::size_t) { return options_.search_radius_m; })) {
       const KeyFrame& key_frame = key_frames_[index];
       const RgbdAlignment alignment = aligner_.Align(key_frame.features, FeaturesOf(frame));
       if (alignment.ok && alignment.confidence >= options_.min_confidence) {
@@ -141,26 +150,23 @@ std::optional<CameraLoop> RgbdTracker::FindLoop(const TrackInput& input, const T
   if (!options_.loops || frame == nullptr || key_frames_.empty()) return std::nullopt;
   const auto& frames = map.key_frames();
   const double path_m = frames[step.key_frame].path_length_m;
-  const Eigen::Isometry3d T_world_camera = CameraFromBase(
-      Carry(step.T_world_base, input.T_odom_base, frame->T_odom_base), input.tilt);
-  std::vector<std::pair<double, std::size_t>> candidates;
-  for (std::size_t i = 0; i < key_frames_.size(); ++i) {
-    const double separation_m = path_m - frames[key_frames_[i].map_key_frame].path_length_m;
-    if (separation_m < options_.loop_min_path_separation_m) break;  // taken in path order
-    const double radius_m =
-        std::min(options_.loop_max_search_radius_m,
-                 options_.loop_search_radius_m + options_.loop_search_radius_per_m * separation_m);
-    const Eigen::Isometry3d T_world_kf = WorldCamera(key_frames_[i], map);
-    const double distance_m = (T_world_kf.translation() - T_world_camera.translation()).norm();
-    if (distance_m <= radius_m && ViewAngle(T_world_kf, T_world_camera) <= options_.max_view_angle_rad) {
-      candidates.emplace_back(distance_m, i);
-    }
+  const Eigen::Isometry3d T_world_camera =
+      CameraFromBase(Carry(step.T_world_base, input.T_odom_base, frame->T_odom_base), input.tilt);
+  const auto separation_m = [&](std::size_t i) {
+    return path_m - frames[key_frames_[i].map_key_frame].path_length_m;
+  };
+  // Key frames are taken in path order: the old enough ones come first.
+  std::size_t old_enough = 0;
+  while (old_enough < key_frames_.size() &&
+         separation_m(old_enough) >= options_.loop_min_path_separation_m) {
+    ++old_enough;
   }
-  std::sort(candidates.begin(), candidates.end());
-  if (candidates.size() > static_cast<std::size_t>(options_.max_candidates)) {
-    candidates.resize(static_cast<std::size_t>(options_.max_candidates));
-  }
-  for (const auto& [distance_m, index] : candidates) {
+  const auto radius_m = [&](std::size_t i) {
+    return std::min(
+        options_.loop_max_search_radius_m,
+        options_.loop_search_radius_m + options_.loop_search_radius_per_m * separation_m(i));
+  };
+  for (std::size_t index : NearestKeyFrames(T_world_camera, map, old_enough, radius_m)) {
     const KeyFrame& key_frame = key_frames_[index];
     ++stats_.loop_alignments;
     const RgbdAlignment alignment = aligner_.Align(key_frame.features, FeaturesOf(frame));

@@ -10,6 +10,7 @@
 // between them.
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -62,8 +63,8 @@ struct CameraPose {
 struct RgbdTrackerStats {
   std::size_t frames = 0;
   std::size_t key_frames = 0;
-  std::size_t alignments = 0;  // frames aligned for routine 3
-  std::size_t aligned = 0;     // of which accepted
+  std::size_t alignments = 0;       // frames aligned for routine 3
+  std::size_t aligned = 0;          // of which accepted
   std::size_t loop_alignments = 0;  // frames aligned to old key frames for a loop
 };
 
@@ -105,6 +106,11 @@ class RgbdTracker final : public RgbdFallback {
   Eigen::Isometry3d CameraFromBase(const PlanarPose& T_world_base,
                                    const std::optional<Tilt>& tilt) const;
   Eigen::Isometry3d WorldCamera(const KeyFrame& key_frame, const KeyFrameMap& map) const;
+  // Of the first `count` key frames, those whose camera lies within radius_m(index) of
+  // T_world_camera and looks within max_view_angle_rad of it: nearest first, max_candidates.
+  std::vector<std::size_t> NearestKeyFrames(
+      const Eigen::Isometry3d& T_world_camera, const KeyFrameMap& map, std::size_t count,
+      const std::function<double(std::size_t)>& radius_m) const;
 
   RgbdTrackerOptions options_;
   RgbdCameraModel camera_;

@@ -58,7 +58,8 @@ ScanPoints ScanToPoints(const LaserScan& scan, const PlanarPose& T_base_laser,
         continue;
       }
     }
-    result.points_base.push_back(laser_base + r * Eigen::Vector2d(x_cos * c + x_sin * s, y_sin * s));
+    result.points_base.push_back(laser_base +
+                                 r * Eigen::Vector2d(x_cos * c + x_sin * s, y_sin * s));
     ++result.valid_beams;
   }
   return result;

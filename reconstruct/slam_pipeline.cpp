@@ -437,8 +437,8 @@ void SlamPipeline::PruneFinalLoops() {
   std::vector<PlanarPose> poses = map_.Poses();
   LandmarkTerms terms = BuildLandmarkTerms();
   const auto camera_loops = [&] {
-    return static_cast<std::size_t>(
-        std::count_if(edges_.begin(), edges_.end(), [](const PoseGraphEdge& e) { return e.camera; }));
+    return static_cast<std::size_t>(std::count_if(edges_.begin(), edges_.end(),
+                                                  [](const PoseGraphEdge& e) { return e.camera; }));
   };
   const std::size_t camera_loops_before = camera_loops();
   const LoopPruning pruning =

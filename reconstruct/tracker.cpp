@@ -97,7 +97,8 @@ void TrackerOptions::Validate() const {
   if (!(min_matching_ratio > 0 && min_matching_ratio <= 1) ||
       !(min_buffer_matching_ratio > 0 && min_buffer_matching_ratio <= 1) ||
       !(tilted_min_matching_ratio > 0 && tilted_min_matching_ratio <= 1) ||
-      !(max_level_tilt_rad > 0) || !(rgbd_ratio_slack >= 0) || !(rgbd_sigma_m > 0) || !(rgbd_sigma_rad > 0)) {
+      !(max_level_tilt_rad > 0) || !(rgbd_ratio_slack >= 0) || !(rgbd_sigma_m > 0) ||
+      !(rgbd_sigma_rad > 0)) {
     throw UsageError(
         "tracker: matching ratios must be in (0, 1], max_level_tilt_rad > 0, rgbd_ratio_slack >= 0 "
         "and the RGB-D sigmas > 0");

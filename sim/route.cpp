@@ -48,8 +48,8 @@ std::vector<Eigen::Vector2d> LawnmowerLanes(const RouteSpec& spec) {
 }  // namespace
 
 std::vector<Eigen::Vector2d> PlanRoute(const RouteSpec& spec) {
-  std::vector<Eigen::Vector2d> route = spec.type == "lawnmower" ? LawnmowerLanes(spec)
-                                                                 : spec.waypoints_m;
+  std::vector<Eigen::Vector2d> route =
+      spec.type == "lawnmower" ? LawnmowerLanes(spec) : spec.waypoints_m;
   if (spec.come_home && route.size() >= 2 && (route.back() - route.front()).norm() > 1e-9) {
     route.push_back(route.front());
   }
