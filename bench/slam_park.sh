@@ -7,7 +7,8 @@
 # over those with the true poses (`littermap eval map`). Runs longer than a few minutes
 # (park_large) also get a per-minute table (bench/trajectory_minutes.py): error percentiles and
 # distance ratio against time, so a bounded drift shows apart from a growing one. loops: the dense
-# loop closer's accepted loops; lm_lps: the loops closed on landmark constellations.
+# loop closer's accepted loops; lm_lps: the loops closed on landmark constellations; cam_lps: the
+# RGB-D loops (hybrid only).
 #   bench/slam_park.sh [LITTERMAP] [WORK_DIR] [RUN...]
 # RUN is a world (park_small, park_large, ...) as shipped, or WORLD:SEED for the same world and
 # route with another draw of sensor noise, odometry drift and timing (`simulate --run-seed`).
@@ -41,8 +42,8 @@ json.dump({"wall_s": wall_s, "peak_mib": peak_kib / 1024}, open(out, "w"))
 EOF
 }
 
-printf '%-14s %-7s %7s %8s %8s %8s %8s %8s %6s %6s %12s\n' run mode scans time_s scans/s peak_MiB \
-  ATE_m RPE_tr_m loops lm_lps map_vs_truth
+printf '%-14s %-7s %7s %8s %8s %8s %8s %8s %6s %6s %7s %12s\n' run mode scans time_s scans/s \
+  peak_MiB ATE_m RPE_tr_m loops lm_lps cam_lps map_vs_truth
 rows=$work/rows.tsv
 : >"$rows"
 for run_name in "${run_names[@]}"; do
@@ -73,12 +74,14 @@ for run_name in "${run_names[@]}"; do
       "$run/odometry.tum" >"$run/minutes.txt"
     ate_m=$(field "$run/eval.json" ate_rmse_m)
     printf '%s\t%s\t%s\n' "$world" "$mode" "$ate_m" >>"$rows"
-    printf '%-14s %-7s %7s %8s %8s %8s %8s %8s %6s %6s %12s\n' "$run_name" "$mode" \
+    printf '%-14s %-7s %7s %8s %8s %8s %8s %8s %6s %6s %7s %12s\n' "$run_name" "$mode" \
       "$(field "$run/quality.json" scans %d)" "$(field "$run.time.json" wall_s %.1f)" \
       "$(field "$run/quality.json" scans_per_s %.0f)" "$(field "$run.time.json" peak_mib %.0f)" \
       "$(printf %.3f "$ate_m")" "$(field "$run/eval.json" rpe_trans_mean_m %.3f)" \
       "$(field "$run/quality.json" loop_closures_accepted %d)" \
       "$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["landmarks"]["loops_accepted"])' \
+        "$run/quality.json")" \
+      "$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1])).get("rgbd", {}).get("loops_accepted", "-"))' \
         "$run/quality.json")" "$map_vs_truth"
   done
 done
