@@ -95,8 +95,7 @@ TEST(Exports, GeoJsonIsRfc7946LonLat) {
   db::SiteFrame frame;
   frame.srs_id = frame.epsg_code = 32633;
   frame.origin_easting_m = 500000.0;
-  const std::vector<db::ItemRecord> items = {
-      {7, "plastic \"bag\"", {0.0, 0.0}, 0, 0.3, 0.9, 1, 2, 2}};
+  std::vector<db::ItemRecord> items = {{7, "plastic \"bag\"", {0.0, 0.0}, 0, 0.3, 0.9, 1, 2, 2}};
   const Wgs84Transform wgs84(32633);
   WriteItemsGeoJson(dir / "items.geojson", items, frame, wgs84);
   const auto json = nlohmann::json::parse(Slurp(dir / "items.geojson"));
@@ -116,6 +115,20 @@ TEST(Exports, GeoJsonIsRfc7946LonLat) {
       csv.find("\n7,\"plastic \"\"bag\"\"\",0.000,0.000,500000.000,0.000,,,0.300,0.900,1,2,2\n"),
       std::string::npos)
       << csv;
+
+  // A class name a spreadsheet would run as a formula is exported as text.
+  items[0].class_name = "=cmd|' /C calc'!A0";
+  items[0].fid = 8;
+  WriteItemsCsv(dir / "formula.csv", items, frame, nullptr);
+  const std::string formula = Slurp(dir / "formula.csv");
+  EXPECT_NE(formula.find("\n8,\"'=cmd|' /C calc'!A0\",0.000"), std::string::npos) << formula;
+  for (const char* start : {"+1", "-1", "@SUM(A1)"}) {
+    items[0].class_name = start;
+    WriteItemsCsv(dir / "formula.csv", items, frame, nullptr);
+    EXPECT_NE(Slurp(dir / "formula.csv").find(std::string("\n8,\"'") + start + "\","),
+              std::string::npos)
+        << start;
+  }
 }
 
 }  // namespace
