@@ -251,9 +251,12 @@ void RegisterCaptureCommand(CLI::App& app, CliContext& context) {
   capture->add_flag("--list-cameras", arguments->list_cameras, "List the OpenNI2 devices and exit");
   capture->add_option("--truth", arguments->simulate.truth,
                       "sim: also write the ground truth into this directory");
-  capture->add_option("--seed", arguments->simulate.seed, "sim: random seed");
-  capture->add_option("--run-seed", arguments->simulate.run_seed,
-                      "sim: seed of sensor noise only (the same park)");
+  capture->add_option("--seed", arguments->simulate.seed, "sim: random seed")
+      ->check(CLI::NonNegativeNumber);
+  capture
+      ->add_option("--run-seed", arguments->simulate.run_seed,
+                   "sim: seed of sensor noise only (the same park)")
+      ->check(CLI::NonNegativeNumber);
   capture->add_option("--route", arguments->simulate.route, "sim: a named route of the world");
   capture->add_option("--contact-sheet", arguments->simulate.contact_sheet,
                       "sim: also write a PNG of sampled colour, depth and laser frames");

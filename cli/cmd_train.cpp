@@ -171,7 +171,9 @@ void RegisterTrainCommands(CLI::App& app, CliContext& context) {
   command->add_option("--trees", train->options.trees, "Random forest size")->capture_default_str();
   command->add_option("--clusters", train->options.clusters_per_class, "K clusters per class")
       ->capture_default_str();
-  command->add_option("--seed", train->options.seed, "Random seed")->capture_default_str();
+  command->add_option("--seed", train->options.seed, "Random seed")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   command->callback([train, &context] { context.run = [train] { RunTrain(*train); }; });
 }
 

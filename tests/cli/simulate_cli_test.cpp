@@ -193,6 +193,13 @@ TEST(SimulateCli, BadWorldExitsTwoNamingFileAndKey) {
       << result.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "bag"));
   EXPECT_EQ(RunLittermap("simulate " + Quote(kWorld) + " -o x").exit_code, 1);  // no --truth
+  // Numbers from the command line are checked where they are read, not wrapped or run on.
+  for (const char* flags : {"--seed -1", "--run-seed -2", "--litter-day 1000000000"}) {
+    const auto refused = RunLittermap("simulate " + Quote(kWorld) + " -o " + Quote(dir / "bag") +
+                                      " --truth " + Quote(dir / "t") + " " + flags);
+    EXPECT_EQ(refused.exit_code, 1) << flags << ": " << refused.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "bag")) << flags;
+  }
 }
 
 }  // namespace
