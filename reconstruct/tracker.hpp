@@ -39,7 +39,7 @@ struct TrackerOptions {
   // scan plane sweeps other heights of the scene than the map's and may graze the ground: routines
   // 1 and 2 then need this matching ratio.
   double max_level_tilt_rad = 0.12;
-  double tilted_min_matching_ratio = 0.8;
+  double tilted_min_matching_ratio = 0.6;
   double rgbd_ratio_slack = 0.1;           // routine 3: the thesis's alpha
   double rgbd_sigma_m = 0.03;              // routine 3's pose, standard deviations
   double rgbd_sigma_rad = 0.02;
