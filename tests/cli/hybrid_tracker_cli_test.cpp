@@ -74,7 +74,7 @@ TEST(HybridTrackerCli, CameraKeepsThePoseThroughTiltsThatLoseTheLaserOnlyTracker
   EXPECT_GT(rgbd_scans, 150);
   EXPECT_LT(hybrid["routines"]["odometry-only"].get<int>(),
             laser["routines"]["odometry-only"].get<int>() / 10);
-  EXPECT_EQ(hybrid["rgbd"]["frames"], 1775);
+  EXPECT_EQ(hybrid["rgbd"]["frames"], 1863);  // the route ends docked at its start
   // Camera and laser both run at 10 Hz: about one alignment per routine-3 scan.
   EXPECT_GE(hybrid["rgbd"]["aligned"].get<int>(), rgbd_scans / 2);
 
