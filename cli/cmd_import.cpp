@@ -101,9 +101,10 @@ void RegisterCarmen(CLI::App& import, CliContext& context) {
   carmen->add_option("--reference", arguments->reference,
                      "Also write the log's (corrected) robot poses, one per scan, as a TUM "
                      "trajectory file");
-  carmen->add_option("--odometry-noise", arguments->noise_seed,
-                     "Replace the odometry by the reference corrupted with seeded Gaussian noise "
-                     "(5 % of distance for dx, dy; 5 % of turn + 1 deg/m + 0.1 deg for dtheta)")
+  carmen
+      ->add_option("--odometry-noise", arguments->noise_seed,
+                   "Replace the odometry by the reference corrupted with seeded Gaussian noise "
+                   "(5 % of distance for dx, dy; 5 % of turn + 1 deg/m + 0.1 deg for dtheta)")
       ->check(CLI::NonNegativeNumber);
   carmen->callback([arguments, &context] {
     context.run = [arguments, &context] { RunCarmen(*arguments, context); };

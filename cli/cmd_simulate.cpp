@@ -73,12 +73,14 @@ void RegisterSimulateCommand(CLI::App& app, CliContext& context) {
       ->add_option("--truth", request->truth,
                    "Directory for trajectory.tum, litter.csv, natural.csv, world.json, masks/")
       ->required();
-  simulate->add_option("--seed", request->seed,
-                       "Random seed of the world and the run (overrides the world's seed)")
+  simulate
+      ->add_option("--seed", request->seed,
+                   "Random seed of the world and the run (overrides the world's seed)")
       ->check(CLI::NonNegativeNumber);
-  simulate->add_option("--run-seed", request->run_seed,
-                       "Random seed of sensor noise, odometry drift and timing only: the same "
-                       "park, another run")
+  simulate
+      ->add_option("--run-seed", request->run_seed,
+                   "Random seed of sensor noise, odometry drift and timing only: the same "
+                   "park, another run")
       ->check(CLI::NonNegativeNumber);
   simulate->add_option("--route", request->route,
                        "Drive this route of the world's `routes` instead of `route`");

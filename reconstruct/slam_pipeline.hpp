@@ -126,7 +126,7 @@ struct SlamQuality {
   std::size_t camera_loops_found = 0;
   std::size_t camera_loops_accepted = 0;
   std::size_t camera_loops_rejected = 0;
-  ScanAlignmentResult alignment;            // the final scan alignment, if it ran
+  ScanAlignmentResult alignment;  // the final scan alignment, if it ran
 };
 
 class SlamPipeline {

@@ -40,8 +40,8 @@ struct TrackerOptions {
   // 1 and 2 then need this matching ratio.
   double max_level_tilt_rad = 0.12;
   double tilted_min_matching_ratio = 0.6;
-  double rgbd_ratio_slack = 0.1;           // routine 3: the thesis's alpha
-  double rgbd_sigma_m = 0.03;              // routine 3's pose, standard deviations
+  double rgbd_ratio_slack = 0.1;  // routine 3: the thesis's alpha
+  double rgbd_sigma_m = 0.03;     // routine 3's pose, standard deviations
   double rgbd_sigma_rad = 0.02;
   // Odometry moving faster than this between two scans is treated as broken. Steps up to
   // the per-step limits always pass: stamps may be synthesised (dt near 0) or sparse.

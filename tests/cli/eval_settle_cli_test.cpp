@@ -16,8 +16,8 @@
 namespace littermap {
 namespace {
 
-using testing::Quote;
 using testing::Ate;
+using testing::Quote;
 using testing::RunLittermap;
 
 TEST(EvalSettleCli, TheCsailReferenceMovesADecimetreLittermapsTrajectoryHardly) {

@@ -18,8 +18,8 @@
 namespace littermap {
 namespace {
 
-using testing::Quote;
 using testing::Ate;
+using testing::Quote;
 using testing::RunLittermap;
 
 nlohmann::json ReadJson(const std::filesystem::path& path) {

@@ -243,9 +243,8 @@ TrackStep TrackIntoGroundArc(const Tilt& tilt, std::size_t arc_points) {
   Tracker tracker(options, &map);
   for (int i = 0; i < 3; ++i) {
     const PlanarPose pose{1.0 + 0.1 * i, 0.5, 0};
-    tracker.Track(static_cast<std::size_t>(i),
-                  {static_cast<TimestampNs>(i) * 100'000'000, testing::RoomPoints(pose), pose,
-                   Tilt{}, true});
+    tracker.Track(static_cast<std::size_t>(i), {static_cast<TimestampNs>(i) * 100'000'000,
+                                                testing::RoomPoints(pose), pose, Tilt{}, true});
   }
   const PlanarPose pose{1.3, 0.5, 0};
   Points2 points = testing::RoomPoints(pose);
