@@ -204,11 +204,10 @@ LoopAttempt LoopCloser::Judge(const KeyFrameMap& map, std::size_t current, std::
   // match: lie in the window searched, which the drift bounds, plus ICP's last step).
   const double path = now.path_length_m - frames[candidate].path_length_m;
   const PlanarPose correction = Between(now.T_world_base, match.T_target_source);
-  const double max_m = std::max(options_.max_correction_m + options_.max_correction_per_m * path,
+  const double max_m = std::max(options_.MaxCorrectionM(path),
                                 std::sqrt(2.0) * window.x_m + options_.correlative.cell_size_m);
   const double max_rad =
-      std::max(options_.max_correction_rad + options_.max_correction_rad_per_m * path,
-               window.theta_rad + options_.guess_step_rad);
+      std::max(options_.MaxCorrectionRad(path), window.theta_rad + options_.guess_step_rad);
   if (std::hypot(correction.x_m, correction.y_m) > max_m ||
       std::abs(correction.theta_rad) > max_rad) {
     attempt.verdict = LoopVerdict::kRejectedDisagreement;

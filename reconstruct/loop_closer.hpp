@@ -60,6 +60,14 @@ struct LoopCloserOptions {
   std::size_t min_source_points = 150;
   double max_source_path_m = 5;
   double source_voxel_size_m = 0.05;
+  // The drift bound over path_m of path between two key frames: a loop whose correction is
+  // larger in position or heading is not explained by drift.
+  double MaxCorrectionM(double path_m) const {
+    return max_correction_m + max_correction_per_m * path_m;
+  }
+  double MaxCorrectionRad(double path_m) const {
+    return max_correction_rad + max_correction_rad_per_m * path_m;
+  }
   void Validate() const;
 };
 

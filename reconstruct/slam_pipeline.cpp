@@ -230,10 +230,8 @@ void SlamPipeline::CloseCameraLoop(const TrackInput& input, const TrackStep& ste
   const auto& frames = map_.key_frames();
   const double path_m = frames[key_frame].path_length_m - frames[loop->key_frame].path_length_m;
   const PlanarPose correction = Between(frames[key_frame].T_world_base, loop->T_world_base);
-  if (std::hypot(correction.x_m, correction.y_m) >
-          options_.loops.max_correction_m + options_.loops.max_correction_per_m * path_m ||
-      std::abs(correction.theta_rad) >
-          options_.loops.max_correction_rad + options_.loops.max_correction_rad_per_m * path_m) {
+  if (std::hypot(correction.x_m, correction.y_m) > options_.loops.MaxCorrectionM(path_m) ||
+      std::abs(correction.theta_rad) > options_.loops.MaxCorrectionRad(path_m)) {
     ++quality_.camera_loops_rejected;
     return;
   }

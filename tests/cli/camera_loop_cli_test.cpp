@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "support/run_command.hpp"
+#include "support/survey_runs.hpp"
 #include "support/temp_dir.hpp"
 #include "support/trajectory_ate.hpp"
 
@@ -17,8 +17,6 @@ namespace littermap {
 namespace {
 
 using testing::Ate;
-using testing::Quote;
-using testing::RunLittermap;
 
 constexpr const char* kWorld = R"(name: lawn
 seed: 7
@@ -43,16 +41,8 @@ truth: {mask_every_n_frames: 0}
 
 TEST(CameraLoopCli, FramesThatSeeTheStartAgainCloseLoops) {
   testing::TempDir d;
-  std::ofstream(d / "lawn.yaml") << kWorld;
-  auto result = RunLittermap("-q simulate " + Quote(d / "lawn.yaml") + " -o " + Quote(d / "bag") +
-                             " --truth " + Quote(d / "truth"));
-  ASSERT_EQ(result.exit_code, 0) << result.output;
-  result = RunLittermap("-q reconstruct " + Quote(d / "bag") + " -o " + Quote(d / "run"));
-  ASSERT_EQ(result.exit_code, 0) << result.output;
-  std::ofstream(d / "no-camera-loops.yaml") << "rgbd_loops: false\n";
-  result = RunLittermap("-q reconstruct " + Quote(d / "bag") + " -o " + Quote(d / "plain") +
-                        " --options " + Quote(d / "no-camera-loops.yaml"));
-  ASSERT_EQ(result.exit_code, 0) << result.output;
+  ASSERT_NO_FATAL_FAILURE(
+      testing::SimulateAndReconstructTwice(d.path(), kWorld, "rgbd_loops: false\n"));
 
   std::ifstream in(d / "run" / "quality.json");
   const auto rgbd = nlohmann::json::parse(in).at("rgbd");

@@ -10,16 +10,14 @@
 
 #include <nlohmann/json.hpp>
 
-#include "support/run_command.hpp"
+#include "support/survey_runs.hpp"
 #include "support/temp_dir.hpp"
 #include "support/trajectory_ate.hpp"
 
 namespace littermap {
 namespace {
 
-using testing::Quote;
 using testing::Ate;
-using testing::RunLittermap;
 
 constexpr const char* kWorld = R"(name: lanes
 seed: 5
@@ -45,16 +43,8 @@ route:
 
 TEST(LandmarkLoopCli, TrunksCloseTheLoopBetweenLanes) {
   testing::TempDir d;
-  std::ofstream(d / "lanes.yaml") << kWorld;
-  auto result = RunLittermap("-q simulate " + Quote(d / "lanes.yaml") + " -o " + Quote(d / "bag") +
-                             " --truth " + Quote(d / "truth"));
-  ASSERT_EQ(result.exit_code, 0) << result.output;
-  result = RunLittermap("-q reconstruct " + Quote(d / "bag") + " -o " + Quote(d / "run"));
-  ASSERT_EQ(result.exit_code, 0) << result.output;
-  std::ofstream(d / "no-landmarks.yaml") << "landmarks: false\n";
-  result = RunLittermap("-q reconstruct " + Quote(d / "bag") + " -o " + Quote(d / "plain") +
-                        " --options " + Quote(d / "no-landmarks.yaml"));
-  ASSERT_EQ(result.exit_code, 0) << result.output;
+  ASSERT_NO_FATAL_FAILURE(
+      testing::SimulateAndReconstructTwice(d.path(), kWorld, "landmarks: false\n"));
 
   std::ifstream in(d / "run" / "quality.json");
   const auto quality = nlohmann::json::parse(in);
