@@ -10,11 +10,11 @@
 #include <opencv2/imgcodecs.hpp>
 #include <random>
 
-#include "capture/bag_reader.hpp"
-#include "capture/bag_writer.hpp"
-#include "capture/image_codec.hpp"
-#include "capture/message_stream.hpp"
-#include "capture/topics.hpp"
+#include "bag/bag_reader.hpp"
+#include "bag/bag_writer.hpp"
+#include "bag/image_codec.hpp"
+#include "bag/message_stream.hpp"
+#include "bag/topics.hpp"
 
 namespace littermap {
 namespace {
@@ -73,15 +73,15 @@ struct Recorder {
   std::mt19937 random{3};
   std::int64_t second = 0;
 
-  void RecordOneSecond(BagWriter& writer) {
+  void RecordOneSecond(bag::BagWriter& writer) {
     const TimestampNs base = (1'700'000'000 + second++) * kNanosecondsPerSecond;
     for (int i = 0; i < kCameraHz; ++i) {
       const TimestampNs t = base + i * kNanosecondsPerSecond / kCameraHz;
       msg::Header header{{static_cast<std::int32_t>(t / kNanosecondsPerSecond), 0},
                          frames::kCamera};
       const auto frame = static_cast<std::size_t>(i) % colour.size();
-      writer.WriteMessage(topics::kColor, t, EncodeColorJpeg(colour[frame], header));
-      writer.WriteMessage(topics::kDepth, t, EncodeDepthPng(depth[frame], header));
+      writer.WriteMessage(topics::kColor, t, bag::EncodeColorJpeg(colour[frame], header));
+      writer.WriteMessage(topics::kDepth, t, bag::EncodeDepthPng(depth[frame], header));
     }
     for (int i = 0; i < kLaserHz; ++i) {
       const TimestampNs t = base + i * kNanosecondsPerSecond / kLaserHz;
@@ -101,7 +101,7 @@ struct Recorder {
 void BM_EncodeColourJpeg(benchmark::State& state) {
   const auto frames = ColourFrames();
   std::size_t i = 0, bytes = 0;
-  for (auto _ : state) bytes += EncodeColorJpeg(frames[i++ % frames.size()], {}).data.size();
+  for (auto _ : state) bytes += bag::EncodeColorJpeg(frames[i++ % frames.size()], {}).data.size();
   state.counters["KB/frame"] = static_cast<double>(bytes) / 1e3 / static_cast<double>(i);
 }
 BENCHMARK(BM_EncodeColourJpeg)->Unit(benchmark::kMillisecond);
@@ -109,12 +109,12 @@ BENCHMARK(BM_EncodeColourJpeg)->Unit(benchmark::kMillisecond);
 void BM_EncodeDepthPng(benchmark::State& state) {
   const auto frames = DepthFrames();
   std::size_t i = 0, bytes = 0;
-  for (auto _ : state) bytes += EncodeDepthPng(frames[i++ % frames.size()], {}).data.size();
+  for (auto _ : state) bytes += bag::EncodeDepthPng(frames[i++ % frames.size()], {}).data.size();
   state.counters["KB/frame"] = static_cast<double>(bytes) / 1e3 / static_cast<double>(i);
 }
 BENCHMARK(BM_EncodeDepthPng)->Unit(benchmark::kMillisecond);
 
-void AddTopics(BagWriter& writer) {
+void AddTopics(bag::BagWriter& writer) {
   writer.AddTopic<msg::CompressedImage>(topics::kColor);
   writer.AddTopic<msg::CompressedImage>(topics::kDepth);
   writer.AddTopic<msg::LaserScan>(topics::kScan);
@@ -132,7 +132,7 @@ void BM_RecordOneSecondOfSensors(benchmark::State& state) {
   Recorder recorder;
   std::uint64_t messages = 0, bytes = 0;
   {
-    BagWriter writer(path);
+    bag::BagWriter writer(path);
     AddTopics(writer);
     for (auto _ : state) {
       recorder.RecordOneSecond(writer);
@@ -141,10 +141,10 @@ void BM_RecordOneSecondOfSensors(benchmark::State& state) {
     messages = writer.message_count();
     bytes = writer.bytes_written();
   }
-  state.counters["x_realtime"] = benchmark::Counter(
-      static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
-  state.counters["MB/s"] = benchmark::Counter(static_cast<double>(bytes) / 1e6,
-                                              benchmark::Counter::kIsRate);
+  state.counters["x_realtime"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["MB/s"] =
+      benchmark::Counter(static_cast<double>(bytes) / 1e6, benchmark::Counter::kIsRate);
   state.counters["msgs/s"] =
       benchmark::Counter(static_cast<double>(messages), benchmark::Counter::kIsRate);
   std::filesystem::remove_all(path);
@@ -156,15 +156,15 @@ BENCHMARK(BM_RecordOneSecondOfSensors)->Unit(benchmark::kMillisecond)->UseRealTi
 void BM_ReadAndDecode(benchmark::State& state) {
   const auto path = BenchDir("littermap-bench-read");
   {
-    BagWriter writer(path);
+    bag::BagWriter writer(path);
     AddTopics(writer);
     Recorder recorder;
     for (int second = 0; second < 10; ++second) recorder.RecordOneSecond(writer);
   }
   std::uint64_t messages = 0, bytes = 0;
   for (auto _ : state) {
-    BagReader reader(path);
-    MessageStream stream(reader);
+    bag::BagReader reader(path);
+    bag::MessageStream stream(reader);
     while (auto message = stream.Next()) {
       benchmark::DoNotOptimize(message->message);
       ++messages;
@@ -173,8 +173,8 @@ void BM_ReadAndDecode(benchmark::State& state) {
       bytes += std::filesystem::file_size(path / file.relative_path);
     }
   }
-  state.counters["MB/s"] = benchmark::Counter(static_cast<double>(bytes) / 1e6,
-                                              benchmark::Counter::kIsRate);
+  state.counters["MB/s"] =
+      benchmark::Counter(static_cast<double>(bytes) / 1e6, benchmark::Counter::kIsRate);
   state.counters["msgs/s"] =
       benchmark::Counter(static_cast<double>(messages), benchmark::Counter::kIsRate);
   std::filesystem::remove_all(path);

@@ -14,8 +14,8 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "bag/sensor_messages.hpp"
 #include "capture/recorder.hpp"
-#include "capture/sensor_messages.hpp"
 
 namespace littermap {
 namespace {
@@ -25,14 +25,15 @@ using Clock = std::chrono::steady_clock;
 constexpr double kRecordSeconds = 20.0;
 
 // Readings at a fixed rate, made by `make(k)`.
-class PacedSource : public SensorSource {
+class PacedSource : public capture::SensorSource {
  public:
-  PacedSource(SensorKind kind, double rate_hz, std::function<SensorSample(std::uint64_t)> make)
+  PacedSource(capture::SensorKind kind, double rate_hz,
+              std::function<capture::SensorSample(std::uint64_t)> make)
       : kind_(kind), period_(1.0 / rate_hz), make_(std::move(make)) {}
-  SensorKind kind() const override { return kind_; }
+  capture::SensorKind kind() const override { return kind_; }
   const std::string& uri() const override { return uri_; }
   void Connect() override { next_ = Clock::now(); }
-  std::optional<SensorSample> Read(double timeout_s) override {
+  std::optional<capture::SensorSample> Read(double timeout_s) override {
     const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                              std::chrono::duration<double>(timeout_s));
     if (next_ > deadline) {
@@ -46,10 +47,10 @@ class PacedSource : public SensorSource {
   void Disconnect() override {}
 
  private:
-  SensorKind kind_;
+  capture::SensorKind kind_;
   std::string uri_ = "bench://paced";
   std::chrono::duration<double> period_;
-  std::function<SensorSample(std::uint64_t)> make_;
+  std::function<capture::SensorSample(std::uint64_t)> make_;
   Clock::time_point next_;
   std::uint64_t k_ = 0;
 };
@@ -86,41 +87,45 @@ void BM_SustainedCapture(benchmark::State& state) {
   scan.ranges_m.resize(1081);
 
   for (auto _ : state) {
-    std::vector<std::unique_ptr<SensorSource>> sources;
-    sources.push_back(std::make_unique<PacedSource>(SensorKind::kCamera, 30, [&](std::uint64_t k) {
-      RgbdFrame frame;  // a driver hands over fresh buffers
-      frame.stamp_ns = HostNowNs();
-      frame.colour_bgr = colours[k % 2].clone();
-      frame.depth_mm = depths[k % 2].clone();
-      frame.camera_info = info;
-      return SensorSample(std::move(frame));
-    }));
-    sources.push_back(std::make_unique<PacedSource>(SensorKind::kLaser, 40, [&](std::uint64_t k) {
-      for (std::size_t i = 0; i < scan.ranges_m.size(); ++i) {
-        scan.ranges_m[i] = static_cast<float>(3 + std::sin(0.01 * static_cast<double>(i + k)));
-      }
-      return SensorSample(sensor_messages::Scan(HostNowNs(), scan));
-    }));
-    sources.push_back(std::make_unique<PacedSource>(SensorKind::kOdometry, 50, [](std::uint64_t k) {
-      const double t = static_cast<double>(k) / 50;
-      return SensorSample(
-          sensor_messages::Odometry(HostNowNs(), {0.5 * t, 0, 0.01 * t}, 0.5, 0.01));
-    }));
+    std::vector<std::unique_ptr<capture::SensorSource>> sources;
+    sources.push_back(
+        std::make_unique<PacedSource>(capture::SensorKind::kCamera, 30, [&](std::uint64_t k) {
+          capture::RgbdFrame frame;  // a driver hands over fresh buffers
+          frame.stamp_ns = HostNowNs();
+          frame.colour_bgr = colours[k % 2].clone();
+          frame.depth_mm = depths[k % 2].clone();
+          frame.camera_info = info;
+          return capture::SensorSample(std::move(frame));
+        }));
+    sources.push_back(
+        std::make_unique<PacedSource>(capture::SensorKind::kLaser, 40, [&](std::uint64_t k) {
+          for (std::size_t i = 0; i < scan.ranges_m.size(); ++i) {
+            scan.ranges_m[i] = static_cast<float>(3 + std::sin(0.01 * static_cast<double>(i + k)));
+          }
+          return capture::SensorSample(bag::sensor_messages::Scan(HostNowNs(), scan));
+        }));
+    sources.push_back(
+        std::make_unique<PacedSource>(capture::SensorKind::kOdometry, 50, [](std::uint64_t k) {
+          const double t = static_cast<double>(k) / 50;
+          return capture::SensorSample(
+              bag::sensor_messages::Odometry(HostNowNs(), {0.5 * t, 0, 0.01 * t}, 0.5, 0.01));
+        }));
 
     const std::filesystem::path bag = std::filesystem::temp_directory_path() /
                                       ("littermap-capture-bench-" + std::to_string(getpid()));
     std::filesystem::remove_all(bag);
-    RecorderOptions options;
+    capture::RecorderOptions options;
     options.max_duration_s = kRecordSeconds;
     const std::atomic<bool> never{false};
     const double cpu_before = CpuSeconds();
-    const RecordingResult result = Record(bag, std::move(sources), {}, options, never);
+    const capture::RecordingResult result =
+        capture::Record(bag, std::move(sources), {}, options, never);
     const double cpu_s = CpuSeconds() - cpu_before;
     std::uintmax_t bag_bytes = 0;
     for (const auto& file : std::filesystem::directory_iterator(bag)) bag_bytes += file.file_size();
     std::filesystem::remove_all(bag);
 
-    for (const SourceStatus& source : result.sources) {
+    for (const capture::SourceStatus& source : result.sources) {
       state.counters[source.name + "_hz"] = static_cast<double>(source.written) / result.duration_s;
       state.counters[source.name + "_drop_pct"] =
           source.received == 0

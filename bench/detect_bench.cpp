@@ -21,7 +21,7 @@ struct Frame {
 };
 
 Eigen::Isometry3d T_base_optical() {
-  return MakeIsometry({0.2, 0, 0.5}, {0, 25 * std::numbers::pi / 180, 0}) * sim::T_body_optical();
+  return MakeIsometry({0.2, 0, 0.5}, {0, 25 * std::numbers::pi / 180, 0}) * T_body_optical();
 }
 
 // Frames along the sample park's route, camera mounted as on the sample robot.

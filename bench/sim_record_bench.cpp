@@ -14,7 +14,7 @@
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
-#include "capture/sim_recorder.hpp"
+#include "sim/recorder.hpp"
 #include "sim/world_spec.hpp"
 
 namespace littermap {
@@ -25,13 +25,14 @@ void BM_RecordSimulation(benchmark::State& state) {
       sim::LoadWorldSpec(LITTERMAP_SOURCE_DIR "/samples/worlds/park_small.yaml");
   const std::filesystem::path dir = std::filesystem::temp_directory_path() /
                                     ("littermap-sim-record-bench-" + std::to_string(getpid()));
-  SimRecordOptions options;
+  sim::SimRecordOptions options;
   options.max_duration_s = static_cast<double>(state.range(0));
   double frames = 0, loop_s = 0, render_s = 0, total_s = 0, bytes = 0;
   for (auto _ : state) {
     std::filesystem::remove_all(dir);
     const auto start = std::chrono::steady_clock::now();
-    const SimRecordResult result = RecordSimulation(spec, dir / "bag", dir / "truth", options);
+    const sim::SimRecordResult result =
+        sim::RecordSimulation(spec, dir / "bag", dir / "truth", options);
     total_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     frames += static_cast<double>(result.frames);
     loop_s += result.simulate_s;

@@ -13,7 +13,7 @@
 #include <cmath>
 #include <cstring>
 
-namespace littermap {
+namespace littermap::capture {
 
 namespace {
 
@@ -183,4 +183,4 @@ std::unique_ptr<ByteStream> OpenByteStream(const std::string& uri, const ByteStr
                    "/DEVICE");
 }
 
-}  // namespace littermap
+}  // namespace littermap::capture

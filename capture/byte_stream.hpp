@@ -10,7 +10,7 @@
 #include "capture/sensor_disconnected.hpp"
 #include "core/error.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 
 class ByteStream {
  public:
@@ -41,4 +41,4 @@ struct ByteStreamSchemes {
 std::unique_ptr<ByteStream> OpenByteStream(const std::string& uri, const ByteStreamSchemes& schemes,
                                            const ByteStreamOptions& options = {});
 
-}  // namespace littermap
+}  // namespace littermap::capture

@@ -7,7 +7,7 @@
 
 #include "core/time.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 
 class ClockOffset {
  public:
@@ -32,4 +32,4 @@ class ClockOffset {
   TimestampNs offset_ns_ = 0;
 };
 
-}  // namespace littermap
+}  // namespace littermap::capture

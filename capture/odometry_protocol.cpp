@@ -7,7 +7,7 @@
 
 #include "core/error.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 namespace {
 
 constexpr std::string_view kPrefix = "$ODOM,";
@@ -97,4 +97,4 @@ std::string FormatOdometryLine(const OdometryReading& reading) {
   return line;
 }
 
-}  // namespace littermap
+}  // namespace littermap::capture

@@ -22,7 +22,7 @@
 
 #include "core/planar_pose.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 
 struct OdometryReading {
   std::uint64_t time_ms = 0;
@@ -39,4 +39,4 @@ std::optional<OdometryReading> ParseOdometryLine(std::string_view line, const st
 // The line for `reading`, without a line end.
 std::string FormatOdometryLine(const OdometryReading& reading);
 
-}  // namespace littermap
+}  // namespace littermap::capture

@@ -1,10 +1,10 @@
 #include "capture/odometry_source.hpp"
 
+#include "bag/sensor_messages.hpp"
 #include "capture/odometry_protocol.hpp"
-#include "capture/sensor_messages.hpp"
 #include "core/error.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 namespace {
 
 constexpr std::size_t kMaxLineBytes = 512;  // a $ODOM line is under 100 bytes
@@ -39,8 +39,8 @@ std::optional<SensorSample> OdometrySource::Read(double timeout_s) {
       if (!reading) continue;
       const TimestampNs stamp_ns =
           clock_.ToHost(static_cast<TimestampNs>(reading->time_ms) * 1'000'000, arrival_ns);
-      return sensor_messages::Odometry(stamp_ns, reading->T_odom_base, reading->linear_mps,
-                                       reading->angular_radps);
+      return bag::sensor_messages::Odometry(stamp_ns, reading->T_odom_base, reading->linear_mps,
+                                            reading->angular_radps);
     }
     if (buffer_.size() > kMaxLineBytes) {
       const std::string garbage = buffer_.substr(0, 40);
@@ -59,4 +59,4 @@ std::optional<SensorSample> OdometrySource::Read(double timeout_s) {
 
 void OdometrySource::Disconnect() { stream_.reset(); }
 
-}  // namespace littermap
+}  // namespace littermap::capture

@@ -10,7 +10,7 @@
 #include "capture/clock_offset.hpp"
 #include "capture/sensor_source.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 
 struct OdometrySourceOptions {
   int clock_offset_readings = 50;  // readings over which the base's clock offset is estimated
@@ -35,4 +35,4 @@ class OdometrySource : public SensorSource {
   ClockOffset clock_;
 };
 
-}  // namespace littermap
+}  // namespace littermap::capture

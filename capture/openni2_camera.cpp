@@ -16,7 +16,7 @@
 #include "capture/clock_offset.hpp"
 #include "core/error.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 namespace {
 
 constexpr std::string_view kScheme = "openni2";
@@ -301,4 +301,4 @@ void Openni2Camera::Disconnect() { device_.reset(); }
 
 std::vector<std::string> Openni2Camera::TakeNotes() { return std::exchange(notes_, {}); }
 
-}  // namespace littermap
+}  // namespace littermap::capture

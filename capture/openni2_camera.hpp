@@ -16,7 +16,7 @@
 
 #include "capture/sensor_source.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 
 struct Openni2CameraOptions {
   int width = 640;  // the supported mode nearest to this size and rate is used
@@ -53,4 +53,4 @@ class Openni2Camera : public SensorSource {
   std::vector<std::string> notes_;
 };
 
-}  // namespace littermap
+}  // namespace littermap::capture

@@ -7,13 +7,13 @@
 #include <thread>
 #include <utility>
 
+#include "bag/message_header.hpp"
+#include "bag/output_guard.hpp"
+#include "bag/topics.hpp"
 #include "capture/byte_stream.hpp"
-#include "capture/message_header.hpp"
-#include "capture/output_guard.hpp"
-#include "capture/topics.hpp"
 #include "core/error.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -220,19 +220,19 @@ void ConnectAll(std::vector<std::unique_ptr<Channel>>& channels, const RecorderO
   }
 }
 
-void AddTopics(BagWriter& writer, SensorKind kind) {
+void AddTopics(bag::BagWriter& writer, SensorKind kind) {
   switch (kind) {
     case SensorKind::kLaser:
-      writer.AddTopic<msg::LaserScan>(topics::kScan, TopicQos::kSensorData);
+      writer.AddTopic<msg::LaserScan>(topics::kScan, bag::TopicQos::kSensorData);
       break;
     case SensorKind::kOdometry:
-      writer.AddTopic<msg::Odometry>(topics::kOdometry, TopicQos::kReliable);
+      writer.AddTopic<msg::Odometry>(topics::kOdometry, bag::TopicQos::kReliable);
       break;
     case SensorKind::kCamera:
-      writer.AddTopic<msg::CameraInfo>(topics::kCameraInfo, TopicQos::kSensorData);
-      writer.AddTopic<msg::CompressedImage>(topics::kColor, TopicQos::kSensorData);
-      writer.AddTopic<msg::CameraInfo>(topics::kDepthCameraInfo, TopicQos::kSensorData);
-      writer.AddTopic<msg::CompressedImage>(topics::kDepth, TopicQos::kSensorData);
+      writer.AddTopic<msg::CameraInfo>(topics::kCameraInfo, bag::TopicQos::kSensorData);
+      writer.AddTopic<msg::CompressedImage>(topics::kColor, bag::TopicQos::kSensorData);
+      writer.AddTopic<msg::CameraInfo>(topics::kDepthCameraInfo, bag::TopicQos::kSensorData);
+      writer.AddTopic<msg::CompressedImage>(topics::kDepth, bag::TopicQos::kSensorData);
       break;
   }
 }
@@ -240,30 +240,30 @@ void AddTopics(BagWriter& writer, SensorKind kind) {
 // Encodes and writes one reading.
 class SampleWriter {
  public:
-  SampleWriter(BagWriter& writer, const ImageCodecOptions& codec)
+  SampleWriter(bag::BagWriter& writer, const bag::ImageCodecOptions& codec)
       : writer_(writer), codec_(codec) {}
 
   void operator()(const msg::LaserScan& scan) {
-    writer_.WriteMessage(topics::kScan, StampOf(scan.header), scan);
+    writer_.WriteMessage(topics::kScan, bag::StampOf(scan.header), scan);
   }
   void operator()(const msg::Odometry& odometry) {
-    writer_.WriteMessage(topics::kOdometry, StampOf(odometry.header), odometry);
+    writer_.WriteMessage(topics::kOdometry, bag::StampOf(odometry.header), odometry);
   }
   void operator()(const RgbdFrame& frame) {
-    const msg::Header header = MakeHeader(frame.stamp_ns, frames::kCamera);
+    const msg::Header header = bag::MakeHeader(frame.stamp_ns, frames::kCamera);
     msg::CameraInfo info = frame.camera_info;
     info.header = header;
     writer_.WriteMessage(topics::kCameraInfo, frame.stamp_ns, info);
     writer_.WriteMessage(topics::kColor, frame.stamp_ns,
-                         EncodeColorJpeg(frame.colour_bgr, header, codec_));
+                         bag::EncodeColorJpeg(frame.colour_bgr, header, codec_));
     writer_.WriteMessage(topics::kDepthCameraInfo, frame.stamp_ns, info);
     writer_.WriteMessage(topics::kDepth, frame.stamp_ns,
-                         EncodeDepthPng(frame.depth_mm, header, codec_));
+                         bag::EncodeDepthPng(frame.depth_mm, header, codec_));
   }
 
  private:
-  BagWriter& writer_;
-  const ImageCodecOptions& codec_;
+  bag::BagWriter& writer_;
+  const bag::ImageCodecOptions& codec_;
 };
 
 std::uint64_t DiskFreeBytes(const std::filesystem::path& path) {
@@ -321,18 +321,18 @@ RecordingResult Record(const std::filesystem::path& bag_path,
   // The bag before the sensors: a bad output path fails at once, not after a camera took its
   // seconds to start; and a sensor that does not connect leaves no empty bag behind (the writer
   // is closed before the guard removes it).
-  OutputGuard guard;
+  bag::OutputGuard guard;
   guard.Add(bag_path);
-  BagWriter writer(bag_path, options.bag);
+  bag::BagWriter writer(bag_path, options.bag);
   ConnectAll(channels, options);
   guard.Commit();
   RecordingResult result;
   const Clock::time_point start = Clock::now();
   try {
     for (const auto& channel : channels) AddTopics(writer, channel->source().kind());
-    writer.AddTopic<msg::String>(kEventsTopic, TopicQos::kReliable);
+    writer.AddTopic<msg::String>(kEventsTopic, bag::TopicQos::kReliable);
     if (!tf_static.transforms.empty()) {
-      writer.AddTopic<msg::TFMessage>(topics::kTfStatic, TopicQos::kLatched);
+      writer.AddTopic<msg::TFMessage>(topics::kTfStatic, bag::TopicQos::kLatched);
       writer.WriteMessage(topics::kTfStatic, HostNowNs(), tf_static);
     }
   } catch (...) {
@@ -469,4 +469,4 @@ RecordingResult Record(const std::filesystem::path& bag_path,
   return result;
 }
 
-}  // namespace littermap
+}  // namespace littermap::capture

@@ -12,7 +12,7 @@
 // max_duration_s, when the disk holding the bag has less than min_free_disk_bytes left, or when
 // a write fails. Every queued reading is written, then metadata.yaml, so the bag is complete.
 // A process killed outright keeps everything up to the bag's last commit (at most
-// bag.commit_interval_ms old, capture/bag_writer.hpp).
+// bag.commit_interval_ms old, bag/bag_writer.hpp).
 
 #include <atomic>
 #include <cstdint>
@@ -24,11 +24,11 @@
 #include <string>
 #include <vector>
 
-#include "capture/bag_writer.hpp"
-#include "capture/image_codec.hpp"
+#include "bag/bag_writer.hpp"
+#include "bag/image_codec.hpp"
 #include "capture/sensor_source.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 
 struct RecorderOptions {
   std::size_t queue_capacity = 64;  // readings per source waiting to be written
@@ -41,8 +41,8 @@ struct RecorderOptions {
   double status_interval_s = 1.0;
   std::uint64_t min_free_disk_bytes = 256ull << 20;
   double max_duration_s = std::numeric_limits<double>::infinity();
-  ImageCodecOptions codec;
-  BagWriterOptions bag;
+  bag::ImageCodecOptions codec;
+  bag::BagWriterOptions bag;
 
   void Validate() const;
 };
@@ -93,4 +93,4 @@ RecordingResult Record(const std::filesystem::path& bag_path,
                        const std::atomic<bool>& stop_requested,
                        const RecorderStatusCallback& status = {});
 
-}  // namespace littermap
+}  // namespace littermap::capture

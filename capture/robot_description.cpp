@@ -2,23 +2,21 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "capture/sensor_messages.hpp"
-#include "capture/topics.hpp"
+#include "bag/sensor_messages.hpp"
+#include "bag/topics.hpp"
 #include "core/error.hpp"
-#include "sim/camera_model.hpp"
-#include "sim/simulation.hpp"
-#include "sim/world_spec.hpp"
-#include "sim/yaml_fields.hpp"
+#include "core/mount.hpp"
+#include "core/yaml_fields.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 namespace {
 
-Eigen::Isometry3d ReadSensorMount(sim::YamlFields& robot, const char* sensor) {
-  sim::YamlFields fields = robot.Child(sensor);
-  sim::MountSpec mount;
-  sim::ReadMount(fields.Child("mount"), mount);
+Eigen::Isometry3d ReadSensorMount(YamlFields& robot, const char* sensor) {
+  YamlFields fields = robot.Child(sensor);
+  MountSpec mount;
+  ReadMount(fields.Child("mount"), mount);
   fields.Finish();
-  return sim::MountPose(mount);
+  return MountPose(mount);
 }
 
 }  // namespace
@@ -34,18 +32,18 @@ RobotDescription ReadRobotDescription(const std::filesystem::path& path) {
   }
   if (!root.IsMap())
     throw BadInputError(path.string() + ": the robot description is not a mapping");
-  sim::YamlFields robot(root, path, "");
+  YamlFields robot(root, path, "");
   RobotDescription out;
   out.T_base_laser = ReadSensorMount(robot, "laser");
-  out.T_base_optical = ReadSensorMount(robot, "camera") * sim::T_body_optical();
+  out.T_base_optical = ReadSensorMount(robot, "camera") * T_body_optical();
   robot.Finish();
   return out;
 }
 
 msg::TFMessage StaticTransforms(TimestampNs stamp_ns, const RobotDescription& robot) {
   return msg::TFMessage{
-      {sensor_messages::TransformFromBase(stamp_ns, frames::kLaser, robot.T_base_laser),
-       sensor_messages::TransformFromBase(stamp_ns, frames::kCamera, robot.T_base_optical)}};
+      {bag::sensor_messages::TransformFromBase(stamp_ns, frames::kLaser, robot.T_base_laser),
+       bag::sensor_messages::TransformFromBase(stamp_ns, frames::kCamera, robot.T_base_optical)}};
 }
 
-}  // namespace littermap
+}  // namespace littermap::capture

@@ -13,10 +13,10 @@
 
 #include <Eigen/Geometry>
 
-#include "capture/ros_messages.hpp"
+#include "bag/ros_messages.hpp"
 #include "core/time.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 
 struct RobotDescription {
   Eigen::Isometry3d T_base_laser = Eigen::Isometry3d::Identity();
@@ -30,4 +30,4 @@ RobotDescription ReadRobotDescription(const std::filesystem::path& path);
 // base_link -> laser and base_link -> camera_color_optical_frame.
 msg::TFMessage StaticTransforms(TimestampNs stamp_ns, const RobotDescription& robot);
 
-}  // namespace littermap
+}  // namespace littermap::capture

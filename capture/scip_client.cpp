@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
-namespace littermap {
+namespace littermap::capture {
 
 namespace {
 
@@ -189,4 +189,4 @@ void ScipClient::Stop() {
   }
 }
 
-}  // namespace littermap
+}  // namespace littermap::capture

@@ -27,7 +27,7 @@
 #include "core/laser_scan.hpp"
 #include "core/time.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 
 struct ScipClientOptions {
   double reply_timeout_s = 1.0;  // for command replies (SCIP2.0, VV, PP, MD, QT)
@@ -101,4 +101,4 @@ class ScipClient {
   ClockOffset clock_;
 };
 
-}  // namespace littermap
+}  // namespace littermap::capture

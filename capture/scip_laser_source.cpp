@@ -1,8 +1,8 @@
 #include "capture/scip_laser_source.hpp"
 
-#include "capture/sensor_messages.hpp"
+#include "bag/sensor_messages.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 
 ScipLaserSource::ScipLaserSource(std::string uri, const ScipClientOptions& options)
     : uri_(std::move(uri)), options_(options) {
@@ -20,7 +20,7 @@ std::optional<SensorSample> ScipLaserSource::Read(double /*timeout_s*/) {
   // disconnected: a laser streams at 10–40 Hz, so a missing frame is never just a quiet moment.
   if (!client_) throw SensorDisconnectedError(uri_ + ": not connected");
   const ScipScan scan = client_->ReadScan();
-  return sensor_messages::Scan(scan.scan.stamp_ns, scan.scan);
+  return bag::sensor_messages::Scan(scan.scan.stamp_ns, scan.scan);
 }
 
 void ScipLaserSource::Disconnect() {
@@ -32,4 +32,4 @@ void ScipLaserSource::Disconnect() {
   client_.reset();
 }
 
-}  // namespace littermap
+}  // namespace littermap::capture

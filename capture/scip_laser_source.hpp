@@ -8,7 +8,7 @@
 #include "capture/scip_client.hpp"
 #include "capture/sensor_source.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 
 class ScipLaserSource : public SensorSource {
  public:
@@ -27,4 +27,4 @@ class ScipLaserSource : public SensorSource {
   std::unique_ptr<ScipClient> client_;
 };
 
-}  // namespace littermap
+}  // namespace littermap::capture

@@ -7,7 +7,7 @@
 
 #include "core/error.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 
 namespace {
 
@@ -287,4 +287,4 @@ LaserScan ScipToLaserScan(const ScipSensorParameters& sensor, const ScipRangeReq
   return scan;
 }
 
-}  // namespace littermap
+}  // namespace littermap::capture

@@ -27,7 +27,7 @@
 #include "core/laser_scan.hpp"
 #include "core/time.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 
 inline constexpr std::size_t kScipMaxDataCharsPerLine = 64;
 
@@ -131,4 +131,4 @@ std::string ScipMdCommand(const ScipRangeRequest& request, int scan_interval, in
 LaserScan ScipToLaserScan(const ScipSensorParameters& sensor, const ScipRangeRequest& request,
                           std::span<const std::uint32_t> ranges_mm, TimestampNs stamp_ns);
 
-}  // namespace littermap
+}  // namespace littermap::capture

@@ -5,7 +5,7 @@
 
 #include "core/error.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 
 // The sensor went away (connection closed, device unplugged, I/O error) or stopped answering:
 // a recorder can catch this, reopen the URI and carry on.
@@ -14,4 +14,4 @@ class SensorDisconnectedError : public InternalError {
   explicit SensorDisconnectedError(const std::string& message) : InternalError(message) {}
 };
 
-}  // namespace littermap
+}  // namespace littermap::capture

@@ -14,11 +14,11 @@
 
 #include <opencv2/core.hpp>
 
-#include "capture/ros_messages.hpp"
+#include "bag/ros_messages.hpp"
 #include "capture/sensor_disconnected.hpp"
 #include "core/time.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 
 // A colour image and the depth registered to it, taken together.
 struct RgbdFrame {
@@ -52,4 +52,4 @@ class SensorSource {
 // "laser", "camera", "odometry": the source's name in status lines and events.
 const char* SensorName(SensorKind kind);
 
-}  // namespace littermap
+}  // namespace littermap::capture

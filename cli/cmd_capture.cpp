@@ -94,13 +94,13 @@ void RunSimulatedCapture(CaptureArguments& arguments, CliContext& context) {
   RunSimulate(arguments.simulate, context);
 }
 
-Openni2CameraOptions ParseCameraMode(const std::string& text) {
+capture::Openni2CameraOptions ParseCameraMode(const std::string& text) {
   static const std::regex kMode(R"((\d{2,5})x(\d{2,5})@(\d{1,3}))");
   std::smatch match;
   if (!std::regex_match(text, match, kMode)) {
     throw UsageError("--camera-mode '" + text + "': expected WIDTHxHEIGHT@FPS, e.g. 640x480@30");
   }
-  Openni2CameraOptions options;
+  capture::Openni2CameraOptions options;
   options.width = std::stoi(match[1]);
   options.height = std::stoi(match[2]);
   options.fps = std::stoi(match[3]);
@@ -108,12 +108,12 @@ Openni2CameraOptions ParseCameraMode(const std::string& text) {
   return options;
 }
 
-std::string FormatStatus(const RecorderStatus& status) {
+std::string FormatStatus(const capture::RecorderStatus& status) {
   std::string line;
   char text[160];
   std::snprintf(text, sizeof text, "recording %4.0f s", status.elapsed_s);
   line += text;
-  for (const SourceStatus& source : status.sources) {
+  for (const capture::SourceStatus& source : status.sources) {
     if (source.connected) {
       std::snprintf(text, sizeof text, " | %s %.1f Hz", source.name.c_str(), source.rate_hz);
     } else {
@@ -130,29 +130,30 @@ std::string FormatStatus(const RecorderStatus& status) {
 }
 
 void RunRealCapture(const CaptureArguments& arguments, CliContext& context) {
-  const Openni2CameraOptions camera_options = ParseCameraMode(arguments.camera_mode);
-  std::vector<std::unique_ptr<SensorSource>> sources;
+  const capture::Openni2CameraOptions camera_options = ParseCameraMode(arguments.camera_mode);
+  std::vector<std::unique_ptr<capture::SensorSource>> sources;
   if (!IsNone(arguments.camera)) {
-    sources.push_back(std::make_unique<Openni2Camera>(arguments.camera, camera_options));
+    sources.push_back(std::make_unique<capture::Openni2Camera>(arguments.camera, camera_options));
   }
   if (!IsNone(arguments.laser))
-    sources.push_back(std::make_unique<ScipLaserSource>(arguments.laser));
+    sources.push_back(std::make_unique<capture::ScipLaserSource>(arguments.laser));
   if (!IsNone(arguments.odometry)) {
-    sources.push_back(std::make_unique<OdometrySource>(arguments.odometry));
+    sources.push_back(std::make_unique<capture::OdometrySource>(arguments.odometry));
   }
   if (sources.empty()) {
     throw UsageError("nothing to record: give --camera, --laser or --odometry");
   }
   msg::TFMessage tf_static;
   if (!arguments.robot.empty()) {
-    tf_static = StaticTransforms(HostNowNs(), ReadRobotDescription(arguments.robot));
+    tf_static =
+        capture::StaticTransforms(HostNowNs(), capture::ReadRobotDescription(arguments.robot));
   } else {
     context.Warn(
         "no --robot description: the bag has no /tf_static, and later stages place "
         "the sensors at base_link");
   }
 
-  RecorderOptions options;
+  capture::RecorderOptions options;
   if (arguments.simulate.duration_s) {
     if (!(*arguments.simulate.duration_s > 0)) throw UsageError("--duration: must be positive");
     options.max_duration_s = *arguments.simulate.duration_s;
@@ -161,18 +162,18 @@ void RunRealCapture(const CaptureArguments& arguments, CliContext& context) {
   options.min_free_disk_bytes = static_cast<std::uint64_t>(arguments.min_free_disk_mb * 1048576.0);
 
   StopOnSignals signals;
-  const RecordingResult result =
-      Record(arguments.simulate.bag, std::move(sources), tf_static, options, g_stop_requested,
-             [&context](const RecorderStatus& status) {
-               for (const std::string& event : status.new_events) context.Warn(event);
-               context.Status(FormatStatus(status));
-             });
+  const capture::RecordingResult result =
+      capture::Record(arguments.simulate.bag, std::move(sources), tf_static, options,
+                      g_stop_requested, [&context](const capture::RecorderStatus& status) {
+                        for (const std::string& event : status.new_events) context.Warn(event);
+                        context.Status(FormatStatus(status));
+                      });
   context.FinishProgress();
 
   std::printf("%s: %s after %.1f s, %llu messages\n", arguments.simulate.bag.c_str(),
               result.stop_reason.c_str(), result.duration_s,
               static_cast<unsigned long long>(result.messages));
-  for (const SourceStatus& source : result.sources) {
+  for (const capture::SourceStatus& source : result.sources) {
     std::printf(
         "  %-8s %s: %llu received, %llu written, %llu dropped, %llu malformed, %llu "
         "disconnects, %.1f s without data, queue max %zu\n",
@@ -182,7 +183,7 @@ void RunRealCapture(const CaptureArguments& arguments, CliContext& context) {
         static_cast<unsigned long long>(source.malformed),
         static_cast<unsigned long long>(source.disconnects), source.gap_s, source.max_queue_depth);
   }
-  if (result.stop == RecordingStop::kWriteFailed) {
+  if (result.stop == capture::RecordingStop::kWriteFailed) {
     throw InternalError(arguments.simulate.bag + ": " + result.stop_reason +
                         " (the bag keeps everything written before)");
   }
@@ -190,7 +191,7 @@ void RunRealCapture(const CaptureArguments& arguments, CliContext& context) {
 
 void RunCapture(CaptureArguments arguments, CliContext& context) {
   if (arguments.list_cameras) {
-    const std::vector<std::string> devices = Openni2Camera::ListDevices();
+    const std::vector<std::string> devices = capture::Openni2Camera::ListDevices();
     for (const std::string& device : devices) std::printf("openni2:%s\n", device.c_str());
     if (devices.empty()) std::printf("no OpenNI2 device found\n");
     return;

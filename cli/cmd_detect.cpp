@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "capture/tum_trajectory.hpp"
+#include "bag/tum_trajectory.hpp"
 #include "cli/cli_context.hpp"
 #include "cli/debug_frames.hpp"
 #include "core/error.hpp"
@@ -69,7 +69,7 @@ void RunDetect(const DetectArguments& arguments, CliContext& context) {
   const auto trajectory_file = arguments.trajectory.empty()
                                    ? run_dir / "trajectory.tum"
                                    : std::filesystem::path(arguments.trajectory);
-  const auto trajectory = ReadTumTrajectory(trajectory_file);
+  const auto trajectory = bag::ReadTumTrajectory(trajectory_file);
   const auto classifier = detect::LitterClassifier::Load(arguments.model);
   const std::size_t clutter = classifier.ClassIndex("clutter");
   std::filesystem::create_directories(out_dir);

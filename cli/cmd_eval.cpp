@@ -20,7 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "capture/tum_trajectory.hpp"
+#include "bag/tum_trajectory.hpp"
 #include "cli/cli_context.hpp"
 #include "core/error.hpp"
 #include "eval/detection_metrics.hpp"
@@ -39,17 +39,7 @@ struct TrajectoryArguments {
   eval::TrajectoryMetricsOptions options;
 };
 
-std::vector<eval::StampedPose> ToStamped(const std::vector<TumPose>& poses) {
-  std::vector<eval::StampedPose> stamped;
-  for (const TumPose& pose : poses) {
-    stamped.push_back({pose.stamp_ns, pose.position_m, pose.orientation});
-  }
-  return stamped;
-}
-
-std::vector<eval::StampedPose> Load(const std::string& path) {
-  return ToStamped(ReadTumTrajectory(path));
-}
+std::vector<StampedPose> Load(const std::string& path) { return bag::ReadTumTrajectory(path); }
 
 void RunTrajectory(const TrajectoryArguments& arguments) {
   const eval::TrajectoryMetrics metrics = eval::EvaluateTrajectory(
@@ -84,7 +74,7 @@ struct BagScans {
 // A bag's laser extrinsic (warnings reported) and all its scans.
 BagScans ReadBagScans(const std::string& bag, const std::string& scan_topic, CliContext& context) {
   reconstruct::ReconstructionOptions bag_options;
-  bag_options.scan_topic = scan_topic;
+  bag_options.topics.scan = scan_topic;
   std::vector<std::string> warnings;
   BagScans read;
   read.T_base_laser = reconstruct::ReadLaserExtrinsic(bag, bag_options, &warnings);
@@ -97,7 +87,7 @@ BagScans ReadBagScans(const std::string& bag, const std::string& scan_topic, Cli
 struct MapArguments {
   std::string bag;
   std::vector<std::string> trajectories;
-  std::string scan_topic = reconstruct::ReconstructionOptions{}.scan_topic;
+  std::string scan_topic = bag::RunTopics{}.scan;
   bool json = false;
   eval::MapSharpnessOptions options;
 };
@@ -108,7 +98,7 @@ void RunMap(const MapArguments& arguments, CliContext& context) {
   std::vector<eval::MapSharpness> results;
   for (const std::string& path : arguments.trajectories) {
     context.Status("drawing the scans with " + path);
-    const std::vector<eval::StampedPose> trajectory = Load(path);
+    const std::vector<StampedPose> trajectory = Load(path);
     eval::MapSharpness sharpness;
     try {
       sharpness = eval::MeasureMapSharpness(scans, T_base_laser, trajectory, arguments.options);
@@ -187,15 +177,15 @@ struct SettleArguments {
   std::string bag;
   std::string trajectory;
   std::string output;
-  std::string scan_topic = reconstruct::ReconstructionOptions{}.scan_topic;
+  std::string scan_topic = bag::RunTopics{}.scan;
   double max_time_difference_s = 0.02;
   bool json = false;
   reconstruct::ScanSettlingOptions options;
 };
 
-std::vector<TumPose> ToTum(const std::vector<std::pair<TimestampNs, PlanarPose>>& poses) {
-  std::vector<TumPose> tum;
-  for (const auto& [stamp_ns, pose] : poses) tum.push_back(TumPoseFromPlanar(stamp_ns, pose));
+std::vector<StampedPose> ToTum(const std::vector<std::pair<TimestampNs, PlanarPose>>& poses) {
+  std::vector<StampedPose> tum;
+  for (const auto& [stamp_ns, pose] : poses) tum.push_back(StampedPoseFromPlanar(stamp_ns, pose));
   return tum;
 }
 
@@ -244,10 +234,10 @@ void RunSettle(const SettleArguments& arguments, CliContext& context) {
     throw UsageError(arguments.output + ": its directory does not exist");
   }
   const reconstruct::ScanSettling settling = Settle(arguments, context);
-  const std::vector<TumPose> settled = ToTum(settling.settled);
+  const std::vector<StampedPose> settled = ToTum(settling.settled);
   const eval::TrajectoryMetrics moved =
-      eval::EvaluateTrajectory(ToStamped(ToTum(settling.given)), ToStamped(settled), {});
-  if (!output.empty()) WriteTumTrajectory(output, settled);
+      eval::EvaluateTrajectory(ToTum(settling.given), settled, {});
+  if (!output.empty()) bag::WriteTumTrajectory(output, settled);
   if (arguments.json) {
     nlohmann::ordered_json json;
     json["scans"] = settling.scans;

@@ -11,12 +11,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "capture/carmen_log.hpp"
-#include "capture/tum_trajectory.hpp"
+#include "bag/tum_trajectory.hpp"
 #include "cli/cli_context.hpp"
 #include "core/error.hpp"
 #include "core/pose3.hpp"
 #include "eval/pose_relations.hpp"
+#include "importers/carmen_log.hpp"
 
 namespace littermap::cli {
 namespace {
@@ -59,11 +59,11 @@ void PrintErrors(const char* name, const eval::RelationErrors& e, double large_e
 std::vector<double> ScanStamps(const RelationsArguments& arguments, CliContext& context) {
   if (!arguments.scanmap.empty()) return eval::ReadScanMapStamps(arguments.scanmap);
   context.Status("reading the scans of " + arguments.log);
-  const CarmenLog log = ReadCarmenLog(arguments.log, context.Progress());
+  const importers::CarmenLog log = importers::ReadCarmenLog(arguments.log, context.Progress());
   context.FinishProgress();
   std::vector<double> stamps;
   stamps.reserve(log.scans.size());
-  for (const CarmenLaserRecord& scan : log.scans) stamps.push_back(scan.timestamp_s);
+  for (const importers::CarmenLaserRecord& scan : log.scans) stamps.push_back(scan.timestamp_s);
   return stamps;
 }
 
@@ -71,7 +71,7 @@ void RunRelations(const RelationsArguments& arguments, CliContext& context) {
   const std::vector<eval::PoseRelation> relations = eval::ReadPoseRelations(arguments.relations);
   const std::vector<double> stamps = ScanStamps(arguments, context);
   std::vector<PlanarPose> trajectory;
-  for (const TumPose& pose : ReadTumTrajectory(arguments.trajectory)) {
+  for (const StampedPose& pose : bag::ReadTumTrajectory(arguments.trajectory)) {
     trajectory.push_back({pose.position_m.x(), pose.position_m.y(), YawOf(pose.orientation)});
   }
   eval::PoseRelationMetrics metrics;

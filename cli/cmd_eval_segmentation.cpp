@@ -60,7 +60,7 @@ void RunEvalSegmentation(const SegmentationArguments& arguments, CliContext& con
   std::vector<int> ids;
   for (const auto& [id, name] : class_of) ids.push_back(id);
 
-  const detect::RgbdFrameReader reader(arguments.bag, detect::RgbdTopics{});
+  const detect::RgbdFrameReader reader(arguments.bag, detect::RgbdFrameOptions{});
   detect::FrameSegmenter segmenter(detect::SegmentationOptions{});
   std::map<std::string, ClassScore> scores;
   std::uint64_t done = 0;

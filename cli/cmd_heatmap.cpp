@@ -63,7 +63,7 @@ void RunHeatmap(HeatmapArguments arguments, CliContext& context) {
                                             : ", class " + arguments.options.class_name) +
       ")";
   if (std::optional<db::SiteMapRecord> site_map = site.SiteMap()) {
-    preview.occupancy_cell_size_m = site_map->resolution_m;
+    preview.occupancy_cell_size_m = site_map->image.resolution_m;
     preview.occupancy = [site_map = std::move(*site_map), frame](double x_m, double y_m) {
       return site_map.GreyAt(frame.FromCrs({x_m, y_m}));
     };

@@ -8,10 +8,10 @@
 #include <optional>
 #include <string>
 
-#include "capture/carmen_importer.hpp"
-#include "capture/tum_importer.hpp"
 #include "cli/cli_context.hpp"
 #include "core/error.hpp"
+#include "importers/carmen_importer.hpp"
+#include "importers/tum_importer.hpp"
 
 namespace littermap::cli {
 namespace {
@@ -30,7 +30,7 @@ struct TumArguments {
   std::string camera;
 };
 
-std::string Skipped(const CarmenImportResult& result) {
+std::string Skipped(const importers::CarmenImportResult& result) {
   std::string text;
   for (const auto& [type, count] : result.skipped_types) {
     text += (text.empty() ? "" : ", ") + std::to_string(count) + " " + type;
@@ -42,11 +42,11 @@ std::string Skipped(const CarmenImportResult& result) {
 }
 
 void RunCarmen(const CarmenArguments& arguments, CliContext& context) {
-  CarmenImportOptions options;
+  importers::CarmenImportOptions options;
   options.reference_path = arguments.reference;
   options.odometry_noise_seed = arguments.noise_seed;
-  const CarmenImportResult result =
-      ImportCarmenLog(arguments.log, arguments.bag, options, context.Progress());
+  const importers::CarmenImportResult result =
+      importers::ImportCarmenLog(arguments.log, arguments.bag, options, context.Progress());
   context.FinishProgress();
   for (const std::string& warning : result.warnings) context.Warn(warning);
   std::string beams = std::to_string(result.beam_count_min);
@@ -67,21 +67,21 @@ void RunCarmen(const CarmenArguments& arguments, CliContext& context) {
 }
 
 void RunTum(const TumArguments& arguments, CliContext& context) {
-  TumImportOptions options;
+  importers::TumImportOptions options;
   options.reference_path = arguments.reference;
   if (!arguments.camera.empty()) {
-    options.camera = ParseTumCamera(arguments.camera);
+    options.camera = importers::ParseTumCamera(arguments.camera);
     if (!options.camera) {
       throw UsageError("--camera: '" + arguments.camera + "' is not one of fr1, fr2, fr3");
     }
   }
-  const TumImportResult result =
-      ImportTumSequence(arguments.directory, arguments.bag, options, context.Progress());
+  const importers::TumImportResult result =
+      importers::ImportTumSequence(arguments.directory, arguments.bag, options, context.Progress());
   context.FinishProgress();
   for (const std::string& warning : result.warnings) context.Warn(warning);
   const auto pairs = static_cast<unsigned long long>(result.pairs_written);
   std::printf("wrote %s: %llu colour, %llu depth, %llu camera_info (%s%s), %.1f s\n",
-              arguments.bag.c_str(), pairs, pairs, pairs, TumCameraName(result.camera),
+              arguments.bag.c_str(), pairs, pairs, pairs, importers::TumCameraName(result.camera),
               result.camera_from_directory ? ", from the directory name" : "", result.duration_s);
   if (!arguments.reference.empty()) {
     std::printf("wrote %s: %llu reference poses\n", arguments.reference.c_str(),

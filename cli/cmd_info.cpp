@@ -4,11 +4,11 @@
 #include <ctime>
 #include <filesystem>
 #include <iostream>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 
-#include "capture/bag_reader.hpp"
-#include "capture/message_stream.hpp"
+#include "bag/bag_reader.hpp"
+#include "bag/message_stream.hpp"
 #include "cli/cli_context.hpp"
 
 namespace littermap::cli {
@@ -21,7 +21,7 @@ struct InfoArguments {
   bool verify = false;
 };
 
-std::uint64_t BagSizeBytes(const BagReader& reader) {
+std::uint64_t BagSizeBytes(const bag::BagReader& reader) {
   std::uint64_t size = 0;
   std::error_code error;
   for (const auto& file : reader.info().files) {
@@ -56,8 +56,8 @@ std::string IsoTime(TimestampNs t) {
   return text;
 }
 
-nlohmann::json InfoJson(const BagReader& reader) {
-  const BagInfo& info = reader.info();
+nlohmann::json InfoJson(const bag::BagReader& reader) {
+  const bag::BagInfo& info = reader.info();
   nlohmann::json json;
   json["path"] = reader.directory().string();
   json["storage_identifier"] = info.storage_identifier;
@@ -82,8 +82,8 @@ nlohmann::json InfoJson(const BagReader& reader) {
   return json;
 }
 
-void PrintText(const BagReader& reader) {
-  const BagInfo& info = reader.info();
+void PrintText(const bag::BagReader& reader) {
+  const bag::BagInfo& info = reader.info();
   std::printf("Files:             ");
   for (std::size_t i = 0; i < info.files.size(); ++i) {
     std::printf("%s%s\n", i ? "                   " : "", info.files[i].relative_path.c_str());
@@ -100,7 +100,7 @@ void PrintText(const BagReader& reader) {
   std::printf("Messages:          %llu\n", static_cast<unsigned long long>(info.message_count));
   std::printf("Topic information: ");
   for (std::size_t i = 0; i < info.topics.size(); ++i) {
-    const TopicInfo& topic = info.topics[i];
+    const bag::TopicInfo& topic = info.topics[i];
     std::printf("%sTopic: %s | Type: %s | Count: %llu | Serialization Format: %s\n",
                 i ? "                   " : "", topic.name.c_str(), topic.type.c_str(),
                 static_cast<unsigned long long>(topic.message_count),
@@ -111,8 +111,8 @@ void PrintText(const BagReader& reader) {
 
 // Decodes every message of a known type; the first one that does not decode is a BadInputError
 // naming topic and index (exit 2). Returns how many messages decoded.
-std::uint64_t VerifyMessages(BagReader& reader, CliContext& context) {
-  MessageStream stream(reader);
+std::uint64_t VerifyMessages(bag::BagReader& reader, CliContext& context) {
+  bag::MessageStream stream(reader);
   const ProgressCallback progress = context.Progress();
   const std::uint64_t total = reader.info().message_count;
   std::uint64_t decoded = 0;
@@ -126,7 +126,7 @@ std::uint64_t VerifyMessages(BagReader& reader, CliContext& context) {
 }
 
 void RunInfo(const InfoArguments& arguments, CliContext& context) {
-  BagReader reader(arguments.bag);
+  bag::BagReader reader(arguments.bag);
   if (reader.metadata_rebuilt()) {
     context.Warn(arguments.bag +
                  ": metadata.yaml is missing or out of date (was the recording interrupted?); "
@@ -134,9 +134,9 @@ void RunInfo(const InfoArguments& arguments, CliContext& context) {
                  (arguments.reindex ? "" : " (--reindex rewrites it)"));
   }
   if (arguments.reindex) {
-    BagInfo rebuilt = reader.info();
-    rebuilt.version = BagInfo{}.version;  // written in littermap's (Iron) layout
-    WriteMetadataYaml(reader.directory() / "metadata.yaml", rebuilt);
+    bag::BagInfo rebuilt = reader.info();
+    rebuilt.version = bag::BagInfo{}.version;  // written in littermap's (Iron) layout
+    bag::WriteMetadataYaml(reader.directory() / "metadata.yaml", rebuilt);
   }
   std::optional<std::uint64_t> verified;
   if (arguments.verify) verified = VerifyMessages(reader, context);
@@ -157,7 +157,8 @@ void RunInfo(const InfoArguments& arguments, CliContext& context) {
 
 void RegisterInfoCommand(CLI::App& app, CliContext& context) {
   auto arguments = std::make_shared<InfoArguments>();
-  CLI::App* info = context.AddCommand(app, "info", "Show the topics, counts and duration of a run bag");
+  CLI::App* info =
+      context.AddCommand(app, "info", "Show the topics, counts and duration of a run bag");
   info->add_option("BAG", arguments->bag, "Bag directory (or one .db3 file)")->required();
   info->add_flag("--json", arguments->json, "Machine-readable output with stable keys");
   info->add_flag("--reindex", arguments->reindex,

@@ -19,7 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "capture/tum_trajectory.hpp"
+#include "bag/tum_trajectory.hpp"
 #include "cli/cli_context.hpp"
 #include "cli/ingest_command.hpp"
 #include "core/error.hpp"
@@ -48,32 +48,6 @@ PlanarPose PoseArgument(const std::vector<double>& values) {
   return {values[0], values[1], values[2] * std::numbers::pi / 180};
 }
 
-db::SiteMapRecord SiteMapFrom(const reconstruct::OccupancyMapImage& map,
-                              const PlanarPose& T_site_map) {
-  db::SiteMapRecord record;
-  record.resolution_m = map.resolution_m;
-  record.origin_x_m = map.origin_x_m;
-  record.origin_y_m = map.origin_y_m;
-  record.width = map.width;
-  record.height = map.height;
-  record.occupied_threshold = map.occupied_threshold;
-  record.T_site_map = T_site_map;
-  record.pixels = map.pixels;
-  return record;
-}
-
-reconstruct::OccupancyMapImage ImageOf(const db::SiteMapRecord& record) {
-  reconstruct::OccupancyMapImage map;
-  map.resolution_m = record.resolution_m;
-  map.origin_x_m = record.origin_x_m;
-  map.origin_y_m = record.origin_y_m;
-  map.width = record.width;
-  map.height = record.height;
-  map.occupied_threshold = record.occupied_threshold;
-  map.pixels = record.pixels;
-  return map;
-}
-
 // Where the run's frame sits in the site: by hand, by matching its map onto the site map, or
 // (first run, no map) the site frame itself.
 void PlaceRun(const IngestArguments& arguments, db::SiteDatabase& site, heatmap::RunInput* run) {
@@ -88,15 +62,15 @@ void PlaceRun(const IngestArguments& arguments, db::SiteDatabase& site, heatmap:
     }
     return;
   }
-  const reconstruct::OccupancyMapImage run_map = reconstruct::ReadOccupancyMap(map_yaml);
+  const OccupancyImage run_map = reconstruct::ReadOccupancyMap(map_yaml);
   const std::optional<db::SiteMapRecord> site_map = site.SiteMap();
   if (!site_map) {
-    run->site_map = SiteMapFrom(run_map, run->T_site_run);
+    run->site_map = db::SiteMapRecord{0, run_map, run->T_site_run};
     std::printf("The run's map becomes the site map\n");
     return;
   }
   if (by_hand) return;
-  reconstruct::Points2 site_points = reconstruct::OccupiedCellCentres(ImageOf(*site_map));
+  reconstruct::Points2 site_points = reconstruct::OccupiedCellCentres(site_map->image);
   for (Eigen::Vector2d& p : site_points) p = reconstruct::Transform(site_map->T_site_map, p);
   const reconstruct::MapRegistrationResult registration = reconstruct::RegisterMap(
       site_points, reconstruct::OccupiedCellCentres(run_map), run->T_site_run,
@@ -127,10 +101,10 @@ void PlaceRun(const IngestArguments& arguments, db::SiteDatabase& site, heatmap:
       registration.matching_ratio);
 }
 
-std::vector<PlanarPose> PlanarTrajectory(const std::vector<TumPose>& poses) {
+std::vector<PlanarPose> PlanarTrajectory(const std::vector<StampedPose>& poses) {
   std::vector<PlanarPose> planar;
   planar.reserve(poses.size());
-  for (const TumPose& pose : poses) {
+  for (const StampedPose& pose : poses) {
     planar.push_back({pose.position_m.x(), pose.position_m.y(), YawOf(pose.orientation)});
   }
   return planar;
@@ -180,7 +154,7 @@ void RunIngest(IngestArguments arguments, CliContext& context) {
                  "inside the camera coverage)");
   }
   db::SiteDatabase site = db::SiteDatabase::Open(arguments.site);
-  const std::vector<TumPose> poses = ReadTumTrajectory(files.trajectory);
+  const std::vector<StampedPose> poses = bag::ReadTumTrajectory(files.trajectory);
   heatmap::RunInput run;
   run.name = arguments.name.empty() ? std::filesystem::absolute(run_dir).filename().string()
                                     : arguments.name;

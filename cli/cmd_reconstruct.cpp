@@ -30,7 +30,7 @@ void RunVisualOdometry(const ReconstructArguments& arguments,
       arguments.bag, options, &frames, &stats, context.Progress());
   context.FinishProgress();
   result.warnings.insert(result.warnings.begin(),
-                         "no laser scans on " + options.scan_topic +
+                         "no laser scans on " + options.topics.scan +
                              ": visual odometry from the camera alone (no occupancy map)");
   if (stats.segments > 1) {
     result.warnings.push_back("tracking was lost " + std::to_string(stats.segments - 1) +
@@ -111,9 +111,9 @@ void RegisterReconstructCommand(CLI::App& app, CliContext& context) {
       ->required()
       ->check(CLI::ExistingPath);
   command->add_option("-o,--output", arguments->run_dir, "Run directory to write")->required();
-  command->add_option("--scan-topic", arguments->options.scan_topic, "LaserScan topic")
+  command->add_option("--scan-topic", arguments->options.topics.scan, "LaserScan topic")
       ->capture_default_str();
-  command->add_option("--odom-topic", arguments->options.odometry_topic, "Odometry topic")
+  command->add_option("--odom-topic", arguments->options.topics.odometry, "Odometry topic")
       ->capture_default_str();
   command
       ->add_option("--options", arguments->options_file,

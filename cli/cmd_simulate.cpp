@@ -6,19 +6,19 @@
 #include <cstdio>
 #include <memory>
 
-#include "capture/contact_sheet.hpp"
-#include "capture/sim_recorder.hpp"
+#include "bag/contact_sheet.hpp"
 #include "cli/date_argument.hpp"
 #include "cli/simulate_run.hpp"
 #include "cli/truth_map.hpp"
 #include "core/error.hpp"
+#include "sim/recorder.hpp"
 #include "sim/world_spec.hpp"
 
 namespace littermap::cli {
 
 void RunSimulate(const SimulateRequest& request, CliContext& context) {
   const sim::WorldSpec spec = sim::LoadWorldSpec(request.world);
-  SimRecordOptions options;
+  sim::SimRecordOptions options;
   options.seed = request.seed;
   options.run_seed = request.run_seed;
   options.route = request.route;
@@ -28,8 +28,8 @@ void RunSimulate(const SimulateRequest& request, CliContext& context) {
     if (!(*request.duration_s > 0)) throw UsageError("--duration: must be positive");
     options.max_duration_s = *request.duration_s;
   }
-  const SimRecordResult result =
-      RecordSimulation(spec, request.bag, request.truth, options, context.Progress());
+  const sim::SimRecordResult result =
+      sim::RecordSimulation(spec, request.bag, request.truth, options, context.Progress());
   context.FinishProgress();
   std::printf(
       "wrote %s: %llu scans (%s), %llu odometry, %llu imu, %llu rgb-d frames, %.1f s, %.1f m%s "
@@ -43,7 +43,8 @@ void RunSimulate(const SimulateRequest& request, CliContext& context) {
       request.route.c_str(),
       result.simulate_s > 0 ? static_cast<double>(result.frames) / result.simulate_s : 0.0);
   if (!request.truth.empty()) {
-    WriteTruthMap(sim::Simulation(RunSpec(spec, options), {options.max_duration_s}), request.truth);
+    WriteTruthMap(sim::Simulation(sim::RunSpec(spec, options), {options.max_duration_s}),
+                  request.truth);
     std::printf(
         "wrote %s: %llu litter, %llu natural look-alikes, %llu primitives, %llu masks, "
         "map.pgm\n",
@@ -53,7 +54,8 @@ void RunSimulate(const SimulateRequest& request, CliContext& context) {
         static_cast<unsigned long long>(result.masks));
   }
   if (!request.contact_sheet.empty()) {
-    const ContactSheetResult sheet = WriteContactSheet(request.bag, request.contact_sheet);
+    const bag::ContactSheetResult sheet =
+        bag::WriteContactSheet(request.bag, request.contact_sheet);
     std::printf("wrote %s: %d frames (colour | depth | laser), %dx%d px\n",
                 request.contact_sheet.c_str(), sheet.rows, sheet.width_px, sheet.height_px);
   }

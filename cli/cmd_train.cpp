@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "capture/tum_trajectory.hpp"
+#include "bag/tum_trajectory.hpp"
 #include "cli/cli_context.hpp"
 #include "cli/debug_frames.hpp"
 #include "core/error.hpp"
@@ -49,7 +49,7 @@ std::string LabelAt(const std::vector<eval::TruthObject>& truth, const Eigen::Ve
 void RunSamples(const SamplesArguments& arguments, CliContext& context) {
   const std::filesystem::path truth_dir = arguments.truth_dir;
   const auto truth = eval::ReadTruthDirectory(truth_dir);
-  const auto trajectory = ReadTumTrajectory(truth_dir / "trajectory.tum");
+  const auto trajectory = bag::ReadTumTrajectory(truth_dir / "trajectory.tum");
   std::vector<detect::ObjectSample> samples;
   std::map<std::string, int> counts;
   const std::string source = std::filesystem::path(arguments.bag).filename().string();

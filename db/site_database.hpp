@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/occupancy_image.hpp"
 #include "core/planar_pose.hpp"
 #include "core/sqlite_database.hpp"
 #include "db/geometry_blob.hpp"
@@ -50,14 +51,8 @@ struct RunRecord {
 // The occupancy map later runs are registered onto (reconstruct's map.pgm of the first run).
 struct SiteMapRecord {
   std::int64_t run_id = 0;
-  double resolution_m = 0.0;
-  double origin_x_m = 0.0;  // lower-left corner, map frame
-  double origin_y_m = 0.0;
-  int width = 0;
-  int height = 0;
-  double occupied_threshold = 0.65;
+  OccupancyImage image;  // in the frame of the run that defined it
   PlanarPose T_site_map;
-  std::vector<std::uint8_t> pixels;  // map_server grey levels, row-major, top row first
 
   // The grey level of the cell under a point of the site frame; none outside the map.
   std::optional<std::uint8_t> GreyAt(const PointXY& site_xy) const;

@@ -86,14 +86,7 @@ std::optional<std::uint8_t> SiteMapRecord::GreyAt(const PointXY& site_xy) const 
   // Into the map's frame: the inverse of T_site_map.
   const double dx = site_xy.x - T_site_map.x_m, dy = site_xy.y - T_site_map.y_m;
   const double c = std::cos(T_site_map.theta_rad), s = std::sin(T_site_map.theta_rad);
-  const double x = c * dx + s * dy, y = -s * dx + c * dy;
-  const double column = std::floor((x - origin_x_m) / resolution_m);
-  const double from_bottom = std::floor((y - origin_y_m) / resolution_m);
-  if (!(column >= 0 && from_bottom >= 0 && column < width && from_bottom < height)) {
-    return std::nullopt;
-  }
-  const auto row = static_cast<std::size_t>(height - 1 - static_cast<int>(from_bottom));
-  return pixels[row * static_cast<std::size_t>(width) + static_cast<std::size_t>(column)];
+  return image.GreyAt(c * dx + s * dy, -s * dx + c * dy);
 }
 
 std::optional<SiteMapRecord> SiteDatabase::SiteMap() {
@@ -103,15 +96,15 @@ std::optional<SiteMapRecord> SiteDatabase::SiteMap() {
   if (!query.Step()) return std::nullopt;
   SiteMapRecord map;
   map.run_id = query.ColumnInt64(0);
-  map.resolution_m = query.ColumnDouble(1);
-  map.origin_x_m = query.ColumnDouble(2);
-  map.origin_y_m = query.ColumnDouble(3);
-  map.width = static_cast<int>(query.ColumnInt64(4));
-  map.height = static_cast<int>(query.ColumnInt64(5));
-  map.occupied_threshold = query.ColumnDouble(6);
+  map.image.resolution_m = query.ColumnDouble(1);
+  map.image.origin_x_m = query.ColumnDouble(2);
+  map.image.origin_y_m = query.ColumnDouble(3);
+  map.image.width = static_cast<int>(query.ColumnInt64(4));
+  map.image.height = static_cast<int>(query.ColumnInt64(5));
+  map.image.occupied_threshold = query.ColumnDouble(6);
   map.T_site_map = {query.ColumnDouble(7), query.ColumnDouble(8), query.ColumnDouble(9)};
   const std::span<const std::uint8_t> pixels = query.ColumnBlob(10);
-  map.pixels.assign(pixels.begin(), pixels.end());
+  map.image.pixels.assign(pixels.begin(), pixels.end());
   return map;
 }
 
@@ -122,16 +115,16 @@ void SiteDatabase::SetSiteMap(const SiteMapRecord& map) {
       "height, occupied_threshold, site_from_map_x_m, site_from_map_y_m, site_from_map_yaw_rad, "
       "pixels) VALUES (1, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
   insert.Bind(1, map.run_id);
-  insert.BindReal(2, map.resolution_m);
-  insert.BindReal(3, map.origin_x_m);
-  insert.BindReal(4, map.origin_y_m);
-  insert.Bind(5, std::int64_t{map.width});
-  insert.Bind(6, std::int64_t{map.height});
-  insert.BindReal(7, map.occupied_threshold);
+  insert.BindReal(2, map.image.resolution_m);
+  insert.BindReal(3, map.image.origin_x_m);
+  insert.BindReal(4, map.image.origin_y_m);
+  insert.Bind(5, std::int64_t{map.image.width});
+  insert.Bind(6, std::int64_t{map.image.height});
+  insert.BindReal(7, map.image.occupied_threshold);
   insert.BindReal(8, map.T_site_map.x_m);
   insert.BindReal(9, map.T_site_map.y_m);
   insert.BindReal(10, map.T_site_map.theta_rad);
-  insert.BindBlob(11, map.pixels);
+  insert.BindBlob(11, map.image.pixels);
   insert.Run();
 }
 

@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-#include "capture/ros_messages.hpp"
+#include "bag/ros_messages.hpp"
 
 namespace littermap::detect {
 

@@ -4,48 +4,49 @@
 #include <cstdlib>
 #include <utility>
 
-#include "capture/bag_reader.hpp"
-#include "capture/camera_setup.hpp"
-#include "capture/image_codec.hpp"
-#include "capture/message_header.hpp"
-#include "capture/message_stream.hpp"
-#include "capture/rgbd_pairing.hpp"
+#include "bag/bag_reader.hpp"
+#include "bag/camera_setup.hpp"
+#include "bag/image_codec.hpp"
+#include "bag/message_header.hpp"
+#include "bag/message_stream.hpp"
+#include "bag/rgbd_pairing.hpp"
 #include "core/error.hpp"
 
 namespace littermap::detect {
 
-RgbdFrameReader::RgbdFrameReader(std::filesystem::path bag, RgbdTopics topics)
-    : bag_(std::move(bag)), topics_(std::move(topics)) {
+RgbdFrameReader::RgbdFrameReader(std::filesystem::path bag, RgbdFrameOptions options)
+    : bag_(std::move(bag)), options_(std::move(options)) {
   {
-    const BagReader reader(bag_);
-    colour_count_ = reader.RequireTopic(topics_.colour, "colour image").message_count;
-    reader.RequireTopic(topics_.depth, "depth image");
+    const bag::BagReader reader(bag_);
+    colour_count_ = reader.RequireTopic(options_.topics.colour, "colour image").message_count;
+    reader.RequireTopic(options_.topics.depth, "depth image");
   }
-  const CameraSetup setup =
-      ReadCameraSetup(bag_, {topics_.camera_info, topics_.tf_static, topics_.camera_frame});
-  intrinsics_ = IntrinsicsFromCameraInfo(setup.info, bag_.string() + ": " + topics_.camera_info);
+  const bag::CameraSetup setup = bag::ReadCameraSetup(bag_, options_.topics);
+  intrinsics_ =
+      IntrinsicsFromCameraInfo(setup.info, bag_.string() + ": " + options_.topics.camera_info);
   T_base_camera_ = setup.T_base_camera;
 }
 
 void RgbdFrameReader::ForEach(std::size_t every,
                               const std::function<void(const RgbdFrame&)>& visit) const {
   if (every == 0) throw UsageError("detect: --every must be >= 1");
-  BagReader reader(bag_);
-  reader.SetTopicFilter({topics_.colour, topics_.depth, topics_.imu});
-  const auto max_imu_age = static_cast<TimestampNs>(topics_.max_imu_age_s * 1e9);
-  RgbdPairing pairing(topics_.max_pair_gap_s);
+  bag::BagReader reader(bag_);
+  reader.SetTopicFilter({options_.topics.colour, options_.topics.depth, options_.topics.imu});
+  const auto max_imu_age = static_cast<TimestampNs>(options_.max_imu_age_s * 1e9);
+  bag::RgbdPairing pairing(options_.max_pair_gap_s);
   std::optional<std::pair<TimestampNs, RollPitchYaw>> tilt;
   std::size_t colour_index = 0, wanted_index = 0;
   while (auto raw = reader.Next()) {
     const std::string& topic = raw->topic->name;
-    if (topic == topics_.imu) {
-      const auto imu = DecodeBagMessage<msg::Imu>(reader, *raw);
-      RollPitchYaw rpy = RpyFromRotation(ToEigen(imu.orientation).normalized().toRotationMatrix());
+    if (topic == options_.topics.imu) {
+      const auto imu = bag::DecodeBagMessage<msg::Imu>(reader, *raw);
+      RollPitchYaw rpy =
+          RpyFromRotation(bag::ToEigen(imu.orientation).normalized().toRotationMatrix());
       rpy.yaw_rad = 0;
-      tilt.emplace(StampOf(imu.header), rpy);
+      tilt.emplace(bag::StampOf(imu.header), rpy);
       continue;
     }
-    const bool is_colour = topic == topics_.colour;
+    const bool is_colour = topic == options_.topics.colour;
     if (is_colour) {
       wanted_index = colour_index++;
       if (wanted_index % every != 0) {
@@ -53,15 +54,15 @@ void RgbdFrameReader::ForEach(std::size_t every,
         continue;
       }
     }
-    auto image = DecodeBagMessage<msg::CompressedImage>(reader, *raw);
-    const std::optional<CompressedRgbd> pair =
+    auto image = bag::DecodeBagMessage<msg::CompressedImage>(reader, *raw);
+    const std::optional<bag::CompressedRgbd> pair =
         is_colour ? pairing.AddColour(std::move(image)) : pairing.AddDepth(std::move(image));
     if (!pair) continue;
     RgbdFrame frame;
     frame.index = wanted_index;
     frame.stamp_ns = pair->stamp_ns;
-    frame.colour_bgr = DecodeColor(pair->colour);
-    frame.depth_mm = DecodeDepthMm(pair->depth);
+    frame.colour_bgr = bag::DecodeColor(pair->colour);
+    frame.depth_mm = bag::DecodeDepthMm(pair->depth);
     if (tilt && std::llabs(frame.stamp_ns - tilt->first) <= max_imu_age) frame.tilt = tilt->second;
     visit(frame);
   }

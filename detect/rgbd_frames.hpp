@@ -12,20 +12,15 @@
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
 
-#include "capture/topics.hpp"
+#include "bag/topics.hpp"
 #include "core/pose3.hpp"
 #include "core/time.hpp"
 #include "detect/camera_intrinsics.hpp"
 
 namespace littermap::detect {
 
-struct RgbdTopics {
-  std::string colour = topics::kColor;
-  std::string depth = topics::kDepth;
-  std::string camera_info = topics::kCameraInfo;
-  std::string tf_static = topics::kTfStatic;
-  std::string imu = topics::kImu;
-  std::string camera_frame = frames::kCamera;
+struct RgbdFrameOptions {
+  bag::RunTopics topics;         // colour, depth, camera info, tf_static, imu, camera frame
   double max_pair_gap_s = 0.02;  // colour and depth of one frame, stamp difference
   double max_imu_age_s = 0.1;    // older tilt counts as unknown (the cloud is then not levelled)
 };
@@ -42,7 +37,7 @@ class RgbdFrameReader {
  public:
   // Reads the camera info and the extrinsic. Throws BadInputError naming the bag and topic when
   // the colour, depth or camera-info topic or the camera transform is missing.
-  RgbdFrameReader(std::filesystem::path bag, RgbdTopics topics);
+  RgbdFrameReader(std::filesystem::path bag, RgbdFrameOptions options);
 
   const CameraIntrinsics& intrinsics() const { return intrinsics_; }
   const Eigen::Isometry3d& T_base_camera() const { return T_base_camera_; }
@@ -55,7 +50,7 @@ class RgbdFrameReader {
 
  private:
   std::filesystem::path bag_;
-  RgbdTopics topics_;
+  RgbdFrameOptions options_;
   CameraIntrinsics intrinsics_;
   Eigen::Isometry3d T_base_camera_ = Eigen::Isometry3d::Identity();
   std::uint64_t colour_count_ = 0;

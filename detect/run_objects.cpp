@@ -29,16 +29,16 @@ void RunObjectsOptions::Validate() const {
   if (!(max_pose_gap_s > 0)) throw UsageError("detect: max_pose_gap_s must be > 0");
 }
 
-std::optional<Eigen::Isometry3d> InterpolatePose(const std::vector<TumPose>& trajectory,
+std::optional<Eigen::Isometry3d> InterpolatePose(const std::vector<StampedPose>& trajectory,
                                                  TimestampNs stamp_ns, double max_gap_s) {
   const auto after = std::lower_bound(
       trajectory.begin(), trajectory.end(), stamp_ns,
-      [](const TumPose& pose, TimestampNs stamp) { return pose.stamp_ns < stamp; });
+      [](const StampedPose& pose, TimestampNs stamp) { return pose.stamp_ns < stamp; });
   if (after == trajectory.end() || (after == trajectory.begin() && after->stamp_ns != stamp_ns)) {
     return std::nullopt;
   }
-  const TumPose& b = *after;
-  const TumPose& a = after == trajectory.begin() ? b : *(after - 1);
+  const StampedPose& b = *after;
+  const StampedPose& a = after == trajectory.begin() ? b : *(after - 1);
   const double gap_s = 1e-9 * static_cast<double>(b.stamp_ns - a.stamp_ns);
   if (gap_s > max_gap_s) return std::nullopt;
   const double t = gap_s > 0 ? 1e-9 * static_cast<double>(stamp_ns - a.stamp_ns) / gap_s : 0.0;
@@ -52,13 +52,13 @@ std::optional<Eigen::Isometry3d> InterpolatePose(const std::vector<TumPose>& tra
 }
 
 RunObjectsResult ForEachRunObject(
-    const std::filesystem::path& bag, const std::vector<TumPose>& trajectory,
+    const std::filesystem::path& bag, const std::vector<StampedPose>& trajectory,
     const RunObjectsOptions& options, const ProgressCallback& progress,
     const std::function<void(const PlacedObject&)>& visit,
     const std::function<void(const RgbdFrame&, const FrameSegmentation&)>& on_frame) {
   options.Validate();
   if (trajectory.empty()) throw BadInputError("detect: the trajectory has no pose");
-  const RgbdFrameReader reader(bag, options.topics);
+  const RgbdFrameReader reader(bag, options.frames);
   RunObjectsResult result;
   const std::string task = "detecting in " + bag.filename().string();
   const std::uint64_t total = (reader.colour_count() + options.every - 1) / options.every;

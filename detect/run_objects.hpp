@@ -10,7 +10,7 @@
 
 #include <Eigen/Core>
 
-#include "capture/tum_trajectory.hpp"
+#include "bag/tum_trajectory.hpp"
 #include "core/progress.hpp"
 #include "detect/frame_segmenter.hpp"
 #include "detect/object_sample.hpp"
@@ -20,7 +20,7 @@ namespace littermap::detect {
 
 struct RunObjectsOptions {
   SegmentationOptions segmentation;
-  RgbdTopics topics;
+  RgbdFrameOptions frames;
   std::size_t every = 1;        // process every n-th frame
   double max_pose_gap_s = 0.5;  // farther from a trajectory pose: the frame is skipped
   void Validate() const;
@@ -44,14 +44,14 @@ struct RunObjectsResult {
 // Visits the objects of every processed frame; `on_frame` (optional) sees each frame's
 // segmentation after its objects. Throws BadInputError for a bag or trajectory at fault.
 RunObjectsResult ForEachRunObject(
-    const std::filesystem::path& bag, const std::vector<TumPose>& trajectory,
+    const std::filesystem::path& bag, const std::vector<StampedPose>& trajectory,
     const RunObjectsOptions& options, const ProgressCallback& progress,
     const std::function<void(const PlacedObject&)>& visit,
     const std::function<void(const RgbdFrame&, const FrameSegmentation&)>& on_frame = {});
 
 // T_world_base at stamp_ns, linearly interpolated (yaw by the shorter arc) between the two
 // trajectory poses around it; nullopt outside the trajectory or across a gap > max_gap_s.
-std::optional<Eigen::Isometry3d> InterpolatePose(const std::vector<TumPose>& trajectory,
+std::optional<Eigen::Isometry3d> InterpolatePose(const std::vector<StampedPose>& trajectory,
                                                  TimestampNs stamp_ns, double max_gap_s);
 
 }  // namespace littermap::detect

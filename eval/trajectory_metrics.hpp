@@ -18,15 +18,10 @@
 #include <Eigen/Geometry>
 
 #include "core/planar_pose.hpp"
+#include "core/stamped_pose.hpp"
 #include "core/time.hpp"
 
 namespace littermap::eval {
-
-struct StampedPose {
-  TimestampNs stamp_ns = 0;
-  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();
-  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
-};
 
 struct TrajectoryMetricsOptions {
   double max_time_difference_s = 0.02;  // associate.py's default

@@ -9,9 +9,9 @@
 #include <string_view>
 #include <variant>
 
-#include "capture/carmen_laser.hpp"
-#include "capture/carmen_log.hpp"
 #include "core/error.hpp"
+#include "importers/carmen_laser.hpp"
+#include "importers/carmen_log.hpp"
 
 namespace {
 

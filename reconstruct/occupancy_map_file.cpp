@@ -43,7 +43,7 @@ int HeaderNumber(std::istream& in, const std::filesystem::path& file, const char
 
 }  // namespace
 
-OccupancyMapImage ReadOccupancyMap(const std::filesystem::path& yaml_path) {
+OccupancyImage ReadOccupancyMap(const std::filesystem::path& yaml_path) {
   YAML::Node yaml;
   try {
     yaml = YAML::LoadFile(yaml_path.string());
@@ -55,7 +55,7 @@ OccupancyMapImage ReadOccupancyMap(const std::filesystem::path& yaml_path) {
     if (!node) throw BadInputError(yaml_path.string() + ": no '" + name + "'");
     return node;
   };
-  OccupancyMapImage map;
+  OccupancyImage map;
   std::filesystem::path image;
   try {
     map.resolution_m = field("resolution").as<double>();
@@ -100,7 +100,7 @@ OccupancyMapImage ReadOccupancyMap(const std::filesystem::path& yaml_path) {
   return map;
 }
 
-Points2 OccupiedCellCentres(const OccupancyMapImage& map) {
+Points2 OccupiedCellCentres(const OccupancyImage& map) {
   Points2 points;
   const double occupied_below = (1 - map.occupied_threshold) * 255;
   for (int row = 0; row < map.height; ++row) {

@@ -7,24 +7,15 @@
 #include <filesystem>
 #include <vector>
 
+#include "core/occupancy_image.hpp"
 #include "reconstruct/scan_points.hpp"
 
 namespace littermap::reconstruct {
 
-struct OccupancyMapImage {
-  double resolution_m = 0;
-  double origin_x_m = 0;  // lower-left corner of the lower-left cell, map frame
-  double origin_y_m = 0;
-  int width = 0;
-  int height = 0;
-  double occupied_threshold = 0.65;  // occupancy probability (255 - grey) / 255 above: occupied
-  std::vector<std::uint8_t> pixels;  // row-major, top row first
-};
-
 // Throws BadInputError naming the file and the field when a file is missing or malformed.
-OccupancyMapImage ReadOccupancyMap(const std::filesystem::path& yaml_path);
+OccupancyImage ReadOccupancyMap(const std::filesystem::path& yaml_path);
 
 // Centres of the occupied cells, in the map frame.
-Points2 OccupiedCellCentres(const OccupancyMapImage& map);
+Points2 OccupiedCellCentres(const OccupancyImage& map);
 
 }  // namespace littermap::reconstruct

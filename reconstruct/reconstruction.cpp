@@ -7,12 +7,12 @@
 #include <optional>
 #include <utility>
 
-#include "capture/bag_reader.hpp"
-#include "capture/camera_setup.hpp"
-#include "capture/image_codec.hpp"
-#include "capture/message_header.hpp"
-#include "capture/message_stream.hpp"
-#include "capture/rgbd_pairing.hpp"
+#include "bag/bag_reader.hpp"
+#include "bag/camera_setup.hpp"
+#include "bag/image_codec.hpp"
+#include "bag/message_header.hpp"
+#include "bag/message_stream.hpp"
+#include "bag/rgbd_pairing.hpp"
 #include "core/error.hpp"
 #include "core/pose3.hpp"
 #include "reconstruct/odometry_history.hpp"
@@ -27,7 +27,7 @@ Tilt TiltOf(const msg::Quaternion& q) {  // roll and pitch of a ZYX (yaw-pitch-r
 
 LaserScan ToScan(const msg::LaserScan& message) {
   LaserScan scan;
-  scan.stamp_ns = StampOf(message.header);
+  scan.stamp_ns = bag::StampOf(message.header);
   scan.angle_min_rad = message.angle_min;
   scan.angle_increment_rad = message.angle_increment;
   scan.range_min_m = message.range_min;
@@ -45,15 +45,8 @@ std::optional<T> Recent(const std::optional<std::pair<TimestampNs, T>>& latest,
   return std::nullopt;
 }
 
-CameraSetupTopics CameraTopics(const ReconstructionOptions& options) {
-  CameraSetupTopics topics;
-  topics.camera_info = options.camera_info_topic;
-  topics.tf_static = options.tf_static_topic;
-  return topics;
-}
-
 // Warnings, run time and rate of a pass over a bag that handled `done` scans or frames.
-ReconstructionResult Finished(const MessageStream& stream,
+ReconstructionResult Finished(const bag::MessageStream& stream,
                               std::chrono::steady_clock::time_point start, std::uint64_t done) {
   ReconstructionResult result;
   for (const std::string& warning : stream.warnings()) result.warnings.push_back(warning);
@@ -66,7 +59,7 @@ ReconstructionResult Finished(const MessageStream& stream,
 }  // namespace
 
 void ReconstructionOptions::Validate() const {
-  if (scan_topic.empty()) throw UsageError("reconstruct: the scan topic must not be empty");
+  if (topics.scan.empty()) throw UsageError("reconstruct: the scan topic must not be empty");
   if (!(max_odometry_age_s > 0)) throw UsageError("reconstruct: max_odometry_age_s must be > 0");
   gyro.Validate();
   slam.Validate();
@@ -78,9 +71,9 @@ PlanarPose ReadLaserExtrinsic(const std::filesystem::path& bag,
                               const ReconstructionOptions& options,
                               std::vector<std::string>* warnings, double* height_m) {
   if (height_m != nullptr) *height_m = 0;
-  BagReader reader(bag);
-  reader.SetTopicFilter({options.tf_static_topic});
-  MessageStream stream(reader);
+  bag::BagReader reader(bag);
+  reader.SetTopicFilter({options.topics.tf_static});
+  bag::MessageStream stream(reader);
   while (auto message = stream.Next()) {
     const auto* tf = std::get_if<msg::TFMessage>(&message->message);
     if (tf == nullptr) continue;
@@ -88,11 +81,11 @@ PlanarPose ReadLaserExtrinsic(const std::filesystem::path& bag,
       if (transform.child_frame_id != frames::kLaser) continue;
       if (height_m != nullptr) *height_m = transform.transform.translation.z;
       return {transform.transform.translation.x, transform.transform.translation.y,
-              YawOf(ToEigen(transform.transform.rotation))};
+              YawOf(bag::ToEigen(transform.transform.rotation))};
     }
   }
   warnings->push_back(bag.string() + ": no " + std::string(frames::kBase) + " -> " +
-                      frames::kLaser + " transform on " + options.tf_static_topic +
+                      frames::kLaser + " transform on " + options.topics.tf_static +
                       "; assuming the laser sits at base_link");
   return {};
 }
@@ -102,16 +95,17 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
                                     const ProgressCallback& progress, RgbdTracker* rgbd) {
   options.Validate();
   const auto start = std::chrono::steady_clock::now();
-  BagReader reader(bag);
-  const std::uint64_t total = reader.RequireTopic(options.scan_topic, "laser scan").message_count;
-  std::vector<std::string> wanted = {options.scan_topic, options.odometry_topic, options.imu_topic};
+  bag::BagReader reader(bag);
+  const std::uint64_t total = reader.RequireTopic(options.topics.scan, "laser scan").message_count;
+  std::vector<std::string> wanted = {options.topics.scan, options.topics.odometry,
+                                     options.topics.imu};
   if (rgbd != nullptr) {
-    wanted.push_back(options.colour_topic);
-    wanted.push_back(options.depth_topic);
+    wanted.push_back(options.topics.colour);
+    wanted.push_back(options.topics.depth);
   }
   reader.SetTopicFilter(wanted);
-  MessageStream stream(reader);
-  RgbdPairing pairing;
+  bag::MessageStream stream(reader);
+  bag::RgbdPairing pairing;
   GyroOdometry gyro(options.gyro);
   OdometryHistory odometry(options.max_odometry_age_s);
   std::optional<std::pair<TimestampNs, Tilt>> tilt;
@@ -135,26 +129,26 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
   while (auto message = stream.Next()) {
     if (const auto* odom = std::get_if<msg::Odometry>(&message->message)) {
       const auto& pose = odom->pose.pose;
-      const TimestampNs stamp_ns = StampOf(odom->header);
+      const TimestampNs stamp_ns = bag::StampOf(odom->header);
       const PlanarPose T_odom_base{pose.position.x, pose.position.y,
-                                   YawOf(ToEigen(pose.orientation))};
+                                   YawOf(bag::ToEigen(pose.orientation))};
       odometry.Add(stamp_ns, gyro.AddOdometry(stamp_ns, T_odom_base));
       if (!waiting.empty()) track_waiting(waiting.back().first.stamp_ns);
       continue;
     }
     if (const auto* imu = std::get_if<msg::Imu>(&message->message)) {
-      tilt.emplace(StampOf(imu->header), TiltOf(imu->orientation));
+      tilt.emplace(bag::StampOf(imu->header), TiltOf(imu->orientation));
       gyro.AddPitch(tilt->second.pitch_rad);
       // A covariance of -1 says the IMU does not measure angular velocity (sensor_msgs/Imu).
       if (options.gyro_heading && imu->angular_velocity_covariance[0] != -1) {
-        gyro.AddYawRate(StampOf(imu->header), imu->angular_velocity.z);
+        gyro.AddYawRate(bag::StampOf(imu->header), imu->angular_velocity.z);
       }
       continue;
     }
     if (auto* image = std::get_if<msg::CompressedImage>(&message->message)) {
-      std::optional<CompressedRgbd> frame = message->topic->name == options.colour_topic
-                                                ? pairing.AddColour(std::move(*image))
-                                                : pairing.AddDepth(std::move(*image));
+      std::optional<bag::CompressedRgbd> frame = message->topic->name == options.topics.colour
+                                                     ? pairing.AddColour(std::move(*image))
+                                                     : pairing.AddDepth(std::move(*image));
       if (frame) {  // images are read only for an RGB-D tracker
         const auto odometry_now = odometry.At(frame->stamp_ns);
         rgbd->AddFrame(std::move(*frame),
@@ -176,10 +170,10 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
 }
 
 std::vector<LaserScan> ReadScans(const std::filesystem::path& bag, const std::string& scan_topic) {
-  BagReader reader(bag);
+  bag::BagReader reader(bag);
   reader.RequireTopic(scan_topic, "laser scan");
   reader.SetTopicFilter({scan_topic});
-  MessageStream stream(reader);
+  bag::MessageStream stream(reader);
   std::vector<LaserScan> scans;
   while (auto message = stream.Next()) {
     if (const auto* laser = std::get_if<msg::LaserScan>(&message->message)) {
@@ -190,7 +184,7 @@ std::vector<LaserScan> ReadScans(const std::filesystem::path& bag, const std::st
 }
 
 bool HasLaser(const std::filesystem::path& bag, const ReconstructionOptions& options) {
-  return BagReader(bag).info().FindTopic(options.scan_topic) != nullptr;
+  return bag::BagReader(bag).info().FindTopic(options.topics.scan) != nullptr;
 }
 
 ReconstructionResult ReconstructBagVisually(const std::filesystem::path& bag,
@@ -200,31 +194,33 @@ ReconstructionResult ReconstructBagVisually(const std::filesystem::path& bag,
                                             const ProgressCallback& progress) {
   options.Validate();
   const auto start = std::chrono::steady_clock::now();
-  BagReader reader(bag);
-  const TopicInfo* colour_info = reader.info().FindTopic(options.colour_topic);
+  bag::BagReader reader(bag);
+  const bag::TopicInfo* colour_info = reader.info().FindTopic(options.topics.colour);
   if (colour_info == nullptr) {
-    throw BadInputError(bag.string() + ": no laser scan topic " + options.scan_topic +
+    throw BadInputError(bag.string() + ": no laser scan topic " + options.topics.scan +
                         " (choose one with --scan-topic) and no colour image topic " +
-                        options.colour_topic + " for visual odometry");
+                        options.topics.colour + " for visual odometry");
   }
   const std::uint64_t total = colour_info->message_count;
-  reader.RequireTopic(options.depth_topic, "depth image");
-  const CameraSetup setup = ReadCameraSetup(bag, CameraTopics(options), Extrinsic::kOptional);
+  reader.RequireTopic(options.topics.depth, "depth image");
+  const bag::CameraSetup setup =
+      bag::ReadCameraSetup(bag, options.topics, bag::Extrinsic::kOptional);
   VisualOdometry odometry(options.visual_odometry, CameraModelFromInfo(setup.info));
-  reader.SetTopicFilter({options.colour_topic, options.depth_topic});
-  MessageStream stream(reader);
-  RgbdPairing pairing;
+  reader.SetTopicFilter({options.topics.colour, options.topics.depth});
+  bag::MessageStream stream(reader);
+  bag::RgbdPairing pairing;
   std::uint64_t done = 0;
   const std::string task = "visual odometry on " + bag.filename().string();
   while (auto message = stream.Next()) {
     auto* image = std::get_if<msg::CompressedImage>(&message->message);
     if (image == nullptr) continue;
-    const bool colour = message->topic->name == options.colour_topic;
+    const bool colour = message->topic->name == options.topics.colour;
     if (colour && ++done % 20 == 0) ReportProgress(progress, {task, done, total});
-    std::optional<CompressedRgbd> frame =
+    std::optional<bag::CompressedRgbd> frame =
         colour ? pairing.AddColour(std::move(*image)) : pairing.AddDepth(std::move(*image));
     if (!frame) continue;
-    const RgbdImage decoded{DecodeColor(frame->colour), DecodeDepthMm(frame->depth), 0.001};
+    const RgbdImage decoded{bag::DecodeColor(frame->colour), bag::DecodeDepthMm(frame->depth),
+                            0.001};
     frames->push_back({frame->stamp_ns, odometry.Track(decoded)});
   }
   ReportProgress(progress, {task, done, total});
@@ -236,16 +232,16 @@ std::unique_ptr<RgbdTracker> MakeRgbdTracker(const std::filesystem::path& bag,
                                              const ReconstructionOptions& options,
                                              std::vector<std::string>* warnings) {
   if (!options.rgbd) return nullptr;
-  const BagReader reader(bag);
+  const bag::BagReader reader(bag);
   for (const std::string& topic :
-       {options.colour_topic, options.depth_topic, options.camera_info_topic}) {
+       {options.topics.colour, options.topics.depth, options.topics.camera_info}) {
     if (reader.info().FindTopic(topic) == nullptr) {
       warnings->push_back(bag.string() + ": no topic " + topic +
                           "; tracking with the laser alone (no RGB-D routine)");
       return nullptr;
     }
   }
-  const CameraSetup setup = ReadCameraSetup(bag, CameraTopics(options));
+  const bag::CameraSetup setup = bag::ReadCameraSetup(bag, options.topics);
   return std::make_unique<RgbdTracker>(options.rgbd_tracker, CameraModelFromInfo(setup.info),
                                        setup.T_base_camera);
 }

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "capture/topics.hpp"
+#include "bag/topics.hpp"
 #include "core/progress.hpp"
 #include "reconstruct/gyro_odometry.hpp"
 #include "reconstruct/rgbd_tracker.hpp"
@@ -17,17 +17,11 @@
 namespace littermap::reconstruct {
 
 struct ReconstructionOptions {
-  std::string scan_topic = topics::kScan;
-  std::string odometry_topic = topics::kOdometry;
-  std::string tf_static_topic = topics::kTfStatic;
-  // Tilt for the ground-hit filter and yaw rate for the odometry's heading, if recorded.
-  std::string imu_topic = topics::kImu;
+  // The IMU gives tilt for the ground-hit filter and yaw rate for the odometry's heading; the
+  // RGB-D camera serves routine 3 when the bag has its topics and `rgbd` is set.
+  bag::RunTopics topics;
   bool gyro_heading = true;  // turn the odometry by the IMU's yaw rate (GyroOdometry)
   GyroOdometryOptions gyro;
-  // The RGB-D camera for routine 3, used when the bag has these topics and `rgbd` is set.
-  std::string colour_topic = topics::kColor;
-  std::string depth_topic = topics::kDepth;
-  std::string camera_info_topic = topics::kCameraInfo;
   bool rgbd = true;
   RgbdTrackerOptions rgbd_tracker;
   VisualOdometryOptions visual_odometry;  // for a bag with a camera and no laser

@@ -19,7 +19,7 @@
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
 
-#include "capture/ros_messages.hpp"
+#include "bag/ros_messages.hpp"
 
 namespace littermap::reconstruct {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <utility>
 
-#include "capture/image_codec.hpp"
+#include "bag/image_codec.hpp"
 #include "core/error.hpp"
 #include "core/pose3.hpp"
 
@@ -60,7 +60,8 @@ RgbdTracker::RgbdTracker(const RgbdTrackerOptions& options, const RgbdCameraMode
       T_base_camera_(T_base_camera),
       aligner_(options.aligner) {}
 
-void RgbdTracker::AddFrame(CompressedRgbd frame, const std::optional<PlanarPose>& T_odom_base) {
+void RgbdTracker::AddFrame(bag::CompressedRgbd frame,
+                           const std::optional<PlanarPose>& T_odom_base) {
   ++stats_.frames;
   Frame next;
   next.images = std::move(frame);
@@ -79,8 +80,8 @@ RgbdTracker::Frame* RgbdTracker::FrameFor(TimestampNs stamp_ns) {
 const RgbdKeyPoints& RgbdTracker::FeaturesOf(Frame* frame) {
   if (!frame->features) {
     RgbdImage image;
-    image.colour_bgr = DecodeColor(frame->images.colour);
-    image.depth = DecodeDepthMm(frame->images.depth);
+    image.colour_bgr = bag::DecodeColor(frame->images.colour);
+    image.depth = bag::DecodeDepthMm(frame->images.depth);
     frame->features = aligner_.Extract(image, camera_);
   }
   return *frame->features;

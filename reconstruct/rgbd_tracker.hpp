@@ -17,7 +17,7 @@
 
 #include <Eigen/Geometry>
 
-#include "capture/rgbd_pairing.hpp"
+#include "bag/rgbd_pairing.hpp"
 #include "core/planar_pose.hpp"
 #include "core/time.hpp"
 #include "reconstruct/keyframe_map.hpp"
@@ -74,7 +74,7 @@ class RgbdTracker final : public RgbdFallback {
               const Eigen::Isometry3d& T_base_camera);
 
   // The next camera frame, with the odometry at its time if known.
-  void AddFrame(CompressedRgbd frame, const std::optional<PlanarPose>& T_odom_base);
+  void AddFrame(bag::CompressedRgbd frame, const std::optional<PlanarPose>& T_odom_base);
 
   std::optional<PlanarPose> AlignAt(const TrackInput& input, const PlanarPose& predicted,
                                     const KeyFrameMap& map) override;
@@ -87,7 +87,7 @@ class RgbdTracker final : public RgbdFallback {
 
  private:
   struct Frame {
-    CompressedRgbd images;
+    bag::CompressedRgbd images;
     std::optional<PlanarPose> T_odom_base;
     std::optional<RgbdKeyPoints> features;  // extracted on first use
     bool recorded = false;                  // its pose is in camera_poses_

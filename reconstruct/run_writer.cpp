@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "capture/tum_trajectory.hpp"
+#include "bag/tum_trajectory.hpp"
 #include "core/error.hpp"
 
 namespace littermap::reconstruct {
@@ -17,7 +17,7 @@ void CreateRunDirectory(const std::filesystem::path& run_dir) {
   if (error) throw UsageError(run_dir.string() + ": cannot create: " + error.message());
 }
 
-TumPose ToTum(TimestampNs stamp_ns, const Eigen::Isometry3d& T) {
+StampedPose ToTum(TimestampNs stamp_ns, const Eigen::Isometry3d& T) {
   return {stamp_ns, T.translation(), Eigen::Quaterniond(T.linear())};
 }
 
@@ -33,8 +33,8 @@ void WriteRoutines(const std::filesystem::path& path, const std::vector<ScanReco
   char ratio[32];
   for (const ScanRecord& scan : scans) {
     std::snprintf(ratio, sizeof ratio, "%.4f", scan.matching_ratio);
-    text += FormatTumStamp(scan.stamp_ns) + ',' + std::string(RoutineName(scan.routine)) + ',' +
-            ratio + ',' + std::to_string(scan.landmark_sightings) + '\n';
+    text += bag::FormatTumStamp(scan.stamp_ns) + ',' + std::string(RoutineName(scan.routine)) +
+            ',' + ratio + ',' + std::to_string(scan.landmark_sightings) + '\n';
   }
   WriteText(path, text);
 }
@@ -53,16 +53,17 @@ std::string_view SourceName(CameraPoseSource source) {
 
 void WriteCameraPoses(const std::filesystem::path& run_dir, const SlamPipeline& pipeline,
                       const RgbdTracker& rgbd) {
-  std::vector<TumPose> poses;
+  std::vector<StampedPose> poses;
   std::string sources = "time,source\n";
   for (const CameraPose& pose : rgbd.camera_poses()) {
     const Eigen::Isometry3d T_world_camera =
         LiftPose(pipeline.scans()[pose.scan_index].T_world_base, std::nullopt) * pose.T_scan_camera;
     poses.push_back(ToTum(pose.stamp_ns, T_world_camera));
-    sources += FormatTumStamp(pose.stamp_ns) + ',' + std::string(SourceName(pose.source)) + '\n';
+    sources +=
+        bag::FormatTumStamp(pose.stamp_ns) + ',' + std::string(SourceName(pose.source)) + '\n';
   }
   WriteText(run_dir / "camera_sources.csv", sources);
-  WriteTumTrajectory(run_dir / "camera.tum", poses);
+  bag::WriteTumTrajectory(run_dir / "camera.tum", poses);
 }
 
 }  // namespace
@@ -132,23 +133,24 @@ std::string QualityJson(const SlamQuality& quality, const ReconstructionResult& 
 void WriteRun(const std::filesystem::path& run_dir, const SlamPipeline& pipeline,
               const ReconstructionResult& result, const RgbdTracker* rgbd) {
   CreateRunDirectory(run_dir);
-  std::vector<TumPose> trajectory;
+  std::vector<StampedPose> trajectory;
   for (const ScanRecord& scan : pipeline.scans()) {
-    trajectory.push_back(TumPoseFromPlanar(scan.stamp_ns, scan.T_world_base));
+    trajectory.push_back(StampedPoseFromPlanar(scan.stamp_ns, scan.T_world_base));
     trajectory.back().position_m.z() = scan.z_m;
   }
-  WriteTumTrajectory(run_dir / "trajectory.tum", trajectory);
+  bag::WriteTumTrajectory(run_dir / "trajectory.tum", trajectory);
   // The odometry at the scans' times, to compare SLAM with odometry alone.
-  std::vector<TumPose> odometry;
+  std::vector<StampedPose> odometry;
   for (const ScanRecord& scan : pipeline.scans()) {
-    if (scan.T_odom_base) odometry.push_back(TumPoseFromPlanar(scan.stamp_ns, *scan.T_odom_base));
+    if (scan.T_odom_base)
+      odometry.push_back(StampedPoseFromPlanar(scan.stamp_ns, *scan.T_odom_base));
   }
-  if (!odometry.empty()) WriteTumTrajectory(run_dir / "odometry.tum", odometry);
-  std::vector<TumPose> key_frames;
+  if (!odometry.empty()) bag::WriteTumTrajectory(run_dir / "odometry.tum", odometry);
+  std::vector<StampedPose> key_frames;
   for (const auto& [stamp, pose] : pipeline.KeyFramePoses()) {
-    key_frames.push_back(TumPoseFromPlanar(stamp, pose));
+    key_frames.push_back(StampedPoseFromPlanar(stamp, pose));
   }
-  WriteTumTrajectory(run_dir / "keyframes.tum", key_frames);
+  bag::WriteTumTrajectory(run_dir / "keyframes.tum", key_frames);
   pipeline.map().WritePgmYaml(run_dir / "map.pgm", run_dir / "map.yaml");
   pipeline.map().WritePng(run_dir / "map.png");
   WriteRoutines(run_dir / "routines.csv", pipeline.scans());
@@ -159,20 +161,20 @@ void WriteRun(const std::filesystem::path& run_dir, const SlamPipeline& pipeline
 void WriteVisualRun(const std::filesystem::path& run_dir, const std::vector<VisualFrame>& frames,
                     const VisualOdometryStats& stats, const ReconstructionResult& result) {
   CreateRunDirectory(run_dir);
-  std::vector<TumPose> trajectory, key_frames;
+  std::vector<StampedPose> trajectory, key_frames;
   std::string routines = "time,routine,matching_ratio\n";
   char confidence[32];
   for (const VisualFrame& frame : frames) {
     std::snprintf(confidence, sizeof confidence, "%.4f", frame.step.alignment.confidence);
-    routines += FormatTumStamp(frame.stamp_ns) + (frame.step.tracked ? ",rgbd," : ",lost,") +
+    routines += bag::FormatTumStamp(frame.stamp_ns) + (frame.step.tracked ? ",rgbd," : ",lost,") +
                 (frame.step.new_segment ? "1.0000" : confidence) + "\n";
     if (!frame.step.tracked) continue;
     if (frame.step.previous_became_key_frame) key_frames.push_back(trajectory.back());
     trajectory.push_back(ToTum(frame.stamp_ns, frame.step.T_world_camera));
     if (frame.step.new_key_frame) key_frames.push_back(trajectory.back());
   }
-  WriteTumTrajectory(run_dir / "trajectory.tum", trajectory);
-  WriteTumTrajectory(run_dir / "keyframes.tum", key_frames);
+  bag::WriteTumTrajectory(run_dir / "trajectory.tum", trajectory);
+  bag::WriteTumTrajectory(run_dir / "keyframes.tum", key_frames);
   WriteText(run_dir / "routines.csv", routines);
   nlohmann::ordered_json json;
   json["mode"] = "visual-odometry";

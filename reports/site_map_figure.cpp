@@ -100,7 +100,7 @@ SiteMapFigure DrawSiteMap(const SiteReport& report, const SiteMapFigureOptions& 
   heatmap::DensityPreviewOptions preview;
   preview.max_size_px = options.max_size_px;
   if (report.site_map) {
-    preview.occupancy_cell_size_m = report.site_map->resolution_m;
+    preview.occupancy_cell_size_m = report.site_map->image.resolution_m;
     preview.occupancy = [&](double x_m, double y_m) {
       return report.site_map->GreyAt(report.frame.FromCrs({x_m, y_m}));
     };

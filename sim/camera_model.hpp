@@ -6,6 +6,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "core/mount.hpp"
+
 namespace littermap::sim {
 
 struct PinholeCamera {
@@ -28,13 +30,5 @@ struct PinholeCamera {
     return u >= -0.5 && v >= -0.5 && u < width - 0.5 && v < height - 0.5;
   }
 };
-
-// T_body_optical: the optical frame (z forward, x right, y down) in the camera body frame
-// (x forward, y left, z up), the rotation between a camera mount and its image (REP 103).
-inline Eigen::Isometry3d T_body_optical() {
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.linear() << 0, 0, 1, -1, 0, 0, 0, -1, 0;
-  return T;
-}
 
 }  // namespace littermap::sim

@@ -31,12 +31,6 @@ std::vector<double> CameraTimes(const CameraSpec& camera, double duration_s, std
 
 }  // namespace
 
-Eigen::Isometry3d MountPose(const MountSpec& mount) {
-  return MakeIsometry(
-      {mount.x_m, mount.y_m, mount.z_m},
-      {mount.roll_deg * kDegToRad, mount.pitch_deg * kDegToRad, mount.yaw_deg * kDegToRad});
-}
-
 Simulation::Simulation(const WorldSpec& spec, const SimulationOptions& options)
     : world_(std::make_unique<World>(GenerateWorld(spec))),
       T_base_laser_(MountPose(spec.robot.laser.mount)),

@@ -73,6 +73,4 @@ class Simulation {
   std::vector<double> camera_times_s_;
 };
 
-Eigen::Isometry3d MountPose(const MountSpec& mount);
-
 }  // namespace littermap::sim

@@ -5,7 +5,7 @@
 
 #include "core/error.hpp"
 #include "core/object_classes.hpp"
-#include "sim/yaml_fields.hpp"
+#include "core/yaml_fields.hpp"
 
 namespace littermap::sim {
 namespace {
@@ -237,16 +237,6 @@ WorldSpec LoadWorldSpec(const std::filesystem::path& path) {
   std::ostringstream text;
   text << in.rdbuf();
   return ParseWorldSpec(text.str(), path);
-}
-
-void ReadMount(YamlFields fields, MountSpec& mount) {
-  fields.Read("x_m", mount.x_m);
-  fields.Read("y_m", mount.y_m);
-  fields.Read("z_m", mount.z_m);
-  fields.Read("roll_deg", mount.roll_deg);
-  fields.Read("pitch_deg", mount.pitch_deg);
-  fields.Read("yaw_deg", mount.yaw_deg);
-  fields.Finish();
 }
 
 }  // namespace littermap::sim

@@ -14,6 +14,8 @@
 
 #include <Eigen/Core>
 
+#include "core/mount.hpp"
+
 namespace littermap::sim {
 
 struct PathSpec {  // a dirt path: a polyline with a width
@@ -76,15 +78,6 @@ struct NaturalSpec {
       {"flower_purple", 0.07}, {"leaf", 0.25},         {"stone", 0.15},
       {"pine_cone", 0.1},      {"branch", 0.1},        {"mushroom", 0.05}};
 };
-
-struct MountSpec {  // a sensor's pose on base_link; rpy as in REP 103
-  double x_m = 0, y_m = 0, z_m = 0;
-  double roll_deg = 0, pitch_deg = 0, yaw_deg = 0;
-};
-
-class YamlFields;
-// Reads x_m, y_m, z_m, roll_deg, pitch_deg, yaw_deg (each optional) of a mount mapping.
-void ReadMount(YamlFields fields, MountSpec& mount);
 
 struct LaserSpec {
   std::string preset = "urg-04lx";  // urg-04lx | utm-30lx

@@ -4,7 +4,7 @@
 
 #include "core/error.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 namespace {
 
 TEST(OdometryProtocol, ParsesTheDocumentedExample) {
@@ -83,4 +83,4 @@ TEST(OdometryProtocol, RejectsBadFieldsWithAValidChecksum) {
 }
 
 }  // namespace
-}  // namespace littermap
+}  // namespace littermap::capture

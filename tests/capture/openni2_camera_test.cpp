@@ -12,7 +12,7 @@
 
 #include "core/error.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 namespace {
 
 std::vector<RgbdFrame> ReadFrames(Openni2Camera& camera, int count) {
@@ -92,4 +92,4 @@ TEST(Openni2Camera, NamesTheUriWhenNoDeviceAnswers) {
 }
 
 }  // namespace
-}  // namespace littermap
+}  // namespace littermap::capture

@@ -13,20 +13,20 @@
 #include <map>
 #include <thread>
 
-#include "capture/bag_reader.hpp"
+#include "bag/bag_reader.hpp"
+#include "bag/image_codec.hpp"
+#include "bag/ros_codec.hpp"
+#include "bag/topics.hpp"
 #include "capture/byte_stream.hpp"
-#include "capture/image_codec.hpp"
 #include "capture/odometry_source.hpp"
 #include "capture/openni2_camera.hpp"
-#include "capture/ros_codec.hpp"
 #include "capture/scip_laser_source.hpp"
-#include "capture/topics.hpp"
 #include "core/error.hpp"
 #include "support/odometry_emulator.hpp"
 #include "support/scip_emulator.hpp"
 #include "support/temp_dir.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 namespace {
 
 using namespace std::chrono_literals;
@@ -114,17 +114,18 @@ RecorderOptions FastOptions(double duration_s) {
 }
 
 std::map<std::string, std::uint64_t> CountsByTopic(const std::filesystem::path& bag) {
-  BagReader reader(bag);
+  bag::BagReader reader(bag);
   std::map<std::string, std::uint64_t> counts;
-  for (const TopicInfo& topic : reader.info().topics) counts[topic.name] = topic.message_count;
+  for (const bag::TopicInfo& topic : reader.info().topics) counts[topic.name] = topic.message_count;
   return counts;
 }
 
 std::vector<std::string> Events(const std::filesystem::path& bag) {
-  BagReader reader(bag);
+  bag::BagReader reader(bag);
   reader.SetTopicFilter({"/capture/events"});
   std::vector<std::string> events;
-  while (auto message = reader.Next()) events.push_back(Decode<msg::String>(message->data).data);
+  while (auto message = reader.Next())
+    events.push_back(bag::Decode<msg::String>(message->data).data);
   return events;
 }
 
@@ -149,7 +150,7 @@ TEST(Recorder, WritesEveryReadingAndACompleteBag) {
   EXPECT_EQ(odometry.written, odometry.received);
   EXPECT_EQ(odometry.dropped, 0u);
   EXPECT_TRUE(std::filesystem::exists(dir / "bag" / "metadata.yaml"));
-  BagReader reader(dir / "bag");
+  bag::BagReader reader(dir / "bag");
   EXPECT_FALSE(reader.metadata_rebuilt());
   EXPECT_EQ(CountsByTopic(dir / "bag")[topics::kOdometry], odometry.written);
 }
@@ -325,12 +326,12 @@ TEST(Recorder, RecordsEmulatedLaserOdometryAndOpenNi2Camera) {
     EXPECT_EQ(source.disconnects, 0u) << name;
   }
 
-  BagReader reader(dir / "bag");
+  bag::BagReader reader(dir / "bag");
   EXPECT_EQ(CountsByTopic(dir / "bag")[topics::kColor], by_name["camera"].written);
   reader.SetTopicFilter({topics::kScan});
   auto first = reader.Next();
   ASSERT_TRUE(first);
-  const auto scan = Decode<msg::LaserScan>(first->data);
+  const auto scan = bag::Decode<msg::LaserScan>(first->data);
   EXPECT_EQ(scan.header.frame_id, frames::kLaser);
   EXPECT_EQ(scan.ranges.size(), 1081u);  // steps 0..1080 of a UTM-30LX
   EXPECT_NEAR(scan.angle_min, -135.0 * M_PI / 180.0, 1e-4);
@@ -341,7 +342,7 @@ TEST(Recorder, RecordsEmulatedLaserOdometryAndOpenNi2Camera) {
   TimestampNs previous = 0;
   int odometry_count = 0;
   while (auto message = reader.Next()) {
-    const auto odometry = Decode<msg::Odometry>(message->data);
+    const auto odometry = bag::Decode<msg::Odometry>(message->data);
     EXPECT_GT(message->timestamp_ns, previous);
     previous = message->timestamp_ns;
     EXPECT_EQ(odometry.child_frame_id, frames::kBase);
@@ -355,8 +356,8 @@ TEST(Recorder, RecordsEmulatedLaserOdometryAndOpenNi2Camera) {
   auto colour = reader.Next(), depth = reader.Next();
   ASSERT_TRUE(colour && depth);
   if (colour->topic->name != topics::kColor) std::swap(colour, depth);
-  const cv::Mat bgr = DecodeColor(Decode<msg::CompressedImage>(colour->data));
-  const cv::Mat mm = DecodeDepthMm(Decode<msg::CompressedImage>(depth->data));
+  const cv::Mat bgr = bag::DecodeColor(bag::Decode<msg::CompressedImage>(colour->data));
+  const cv::Mat mm = bag::DecodeDepthMm(bag::Decode<msg::CompressedImage>(depth->data));
   EXPECT_EQ(bgr.size(), cv::Size(320, 240));  // the only mode the dummy device offers
   EXPECT_EQ(mm.size(), cv::Size(320, 240));
   EXPECT_TRUE(AnyContains(result.events, "camera: the device reports no field of view"));
@@ -400,4 +401,4 @@ TEST(Recorder, ReadsLaserAndOdometryOverPseudoTerminals) {
 }
 
 }  // namespace
-}  // namespace littermap
+}  // namespace littermap::capture

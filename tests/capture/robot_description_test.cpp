@@ -4,12 +4,12 @@
 
 #include <fstream>
 
-#include "capture/message_header.hpp"
-#include "capture/topics.hpp"
+#include "bag/message_header.hpp"
+#include "bag/topics.hpp"
 #include "core/error.hpp"
 #include "support/temp_dir.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 namespace {
 
 std::filesystem::path Write(const testing::TempDir& dir, const std::string& text) {
@@ -42,7 +42,7 @@ camera:
   EXPECT_EQ(tf.transforms[0].header.frame_id, frames::kBase);
   EXPECT_EQ(tf.transforms[0].child_frame_id, frames::kLaser);
   EXPECT_EQ(tf.transforms[1].child_frame_id, frames::kCamera);
-  EXPECT_TRUE(ToIsometry(tf.transforms[1].transform).isApprox(robot.T_base_optical, 1e-12));
+  EXPECT_TRUE(bag::ToIsometry(tf.transforms[1].transform).isApprox(robot.T_base_optical, 1e-12));
 }
 
 TEST(RobotDescription, ErrorsNameTheFileAndKey) {
@@ -66,4 +66,4 @@ TEST(RobotDescription, ErrorsNameTheFileAndKey) {
 }
 
 }  // namespace
-}  // namespace littermap
+}  // namespace littermap::capture

@@ -20,7 +20,7 @@
 #include "core/error.hpp"
 #include "support/scip_emulator.hpp"
 
-namespace littermap {
+namespace littermap::capture {
 namespace {
 
 using testing::ScipEmulator;
@@ -486,4 +486,4 @@ TEST(ScipClient, RejectsOtherUris) {
 }
 
 }  // namespace
-}  // namespace littermap
+}  // namespace littermap::capture

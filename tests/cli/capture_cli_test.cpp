@@ -16,9 +16,9 @@
 #include <sstream>
 #include <thread>
 
-#include "capture/bag_reader.hpp"
-#include "capture/ros_codec.hpp"
-#include "capture/topics.hpp"
+#include "bag/bag_reader.hpp"
+#include "bag/ros_codec.hpp"
+#include "bag/topics.hpp"
 #include "support/odometry_emulator.hpp"
 #include "support/run_command.hpp"
 #include "support/scip_emulator.hpp"
@@ -94,9 +94,9 @@ bool WaitForLog(const CaptureProcess& process, const std::string& text,
   return false;
 }
 
-std::map<std::string, std::uint64_t> CountsByTopic(BagReader& reader) {
+std::map<std::string, std::uint64_t> CountsByTopic(bag::BagReader& reader) {
   std::map<std::string, std::uint64_t> counts;
-  for (const TopicInfo& topic : reader.info().topics) counts[topic.name] = topic.message_count;
+  for (const bag::TopicInfo& topic : reader.info().topics) counts[topic.name] = topic.message_count;
   return counts;
 }
 
@@ -154,7 +154,7 @@ TEST_P(CaptureCliStop, FinishesTheBag) {
   EXPECT_NE(capture.Log().find("stopped on request"), std::string::npos) << capture.Log();
 
   ASSERT_TRUE(std::filesystem::exists(bag / "metadata.yaml"));
-  BagReader reader(bag);
+  bag::BagReader reader(bag);
   EXPECT_FALSE(reader.metadata_rebuilt());
   auto counts = CountsByTopic(reader);
   EXPECT_GE(counts[topics::kScan], 40u);
@@ -182,7 +182,7 @@ TEST(CaptureCli, SigkillKeepsEverythingButTheLastSecond) {
   ASSERT_TRUE(capture.Wait(5s).has_value());
 
   EXPECT_FALSE(std::filesystem::exists(bag / "metadata.yaml"));
-  BagReader reader(bag);
+  bag::BagReader reader(bag);
   EXPECT_TRUE(reader.metadata_rebuilt());
   auto counts = CountsByTopic(reader);
   // 3 s of 40 Hz scans were sent while recording; the last commit is at most 1 s old.
@@ -194,7 +194,7 @@ TEST(CaptureCli, SigkillKeepsEverythingButTheLastSecond) {
   reader.SetTopicFilter({topics::kScan});
   int scans = 0;
   while (auto message = reader.Next()) {
-    EXPECT_EQ(Decode<msg::LaserScan>(message->data).ranges.size(), 1081u);
+    EXPECT_EQ(bag::Decode<msg::LaserScan>(message->data).ranges.size(), 1081u);
     ++scans;
   }
   EXPECT_EQ(static_cast<std::uint64_t>(scans), counts[topics::kScan]);

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "capture/bag_reader.hpp"
+#include "bag/bag_reader.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -34,7 +34,7 @@ TEST(ImportCli, CarmenSucceedsWithSummaryAndWarning) {
   EXPECT_NE(result.output.find("warning: orebro-corrected.log.gz"), std::string::npos)
       << result.output;
   EXPECT_TRUE(std::filesystem::exists(dir / "ref.tum"));
-  EXPECT_EQ(BagReader(dir / "bag").info().message_count, 237u * 2 + 1);
+  EXPECT_EQ(bag::BagReader(dir / "bag").info().message_count, 237u * 2 + 1);
 }
 
 TEST(ImportCli, QuietSilencesWarningsButNotTheSummary) {

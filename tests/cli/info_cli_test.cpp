@@ -5,7 +5,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "capture/bag_writer.hpp"
+#include "bag/bag_writer.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -15,8 +15,8 @@ namespace {
 using testing::RunLittermap;
 
 void WriteSmallBag(const std::filesystem::path& path) {
-  BagWriter writer(path);
-  writer.AddTopic<msg::String>("/notes", TopicQos::kReliable);
+  bag::BagWriter writer(path);
+  writer.AddTopic<msg::String>("/notes", bag::TopicQos::kReliable);
   for (int i = 0; i < 5; ++i) {
     writer.WriteMessage("/notes", 2'000'000'000 + i * 500'000'000LL, msg::String{"note"});
   }
@@ -100,12 +100,12 @@ namespace {
 TEST(InfoCli, VerifyNamesTheDamagedMessageAndExitsTwo) {
   testing::TempDir dir;
   {
-    BagWriter writer(dir / "bag");
+    bag::BagWriter writer(dir / "bag");
     writer.AddTopic<msg::LaserScan>("/scan");
-    writer.AddTopic("/custom", "acme_msgs/msg/Widget", TopicQos::kReliable);
+    writer.AddTopic("/custom", "acme_msgs/msg/Widget", bag::TopicQos::kReliable);
     msg::LaserScan scan;
     scan.ranges = {1.f, 2.f};
-    const auto bytes = Encode(scan);
+    const auto bytes = bag::Encode(scan);
     writer.Write("/scan", 1, bytes);
     writer.Write("/custom", 2, bytes);
     writer.Write("/scan", 3, std::span(bytes).first(bytes.size() - 3));

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <fstream>
 
-#include "capture/tum_trajectory.hpp"
+#include "bag/tum_trajectory.hpp"
 #include "core/sqlite_database.hpp"
 #include "eval/trajectory_metrics.hpp"
 #include "support/carmen_import.hpp"
@@ -41,11 +41,7 @@ std::filesystem::path ReconstructedRun(const std::filesystem::path& dir, int see
 Eigen::Isometry3d TrajectoryFit(const std::filesystem::path& from,
                                 const std::filesystem::path& onto) {
   const auto read = [](const std::filesystem::path& run) {
-    std::vector<eval::StampedPose> poses;
-    for (const TumPose& pose : ReadTumTrajectory(run / "trajectory.tum")) {
-      poses.push_back({pose.stamp_ns, pose.position_m, pose.orientation});
-    }
-    return poses;
+    return bag::ReadTumTrajectory(run / "trajectory.tum");
   };
   return eval::EvaluateTrajectory(read(from), read(onto), {}).T_reference_estimate;
 }

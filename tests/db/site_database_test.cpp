@@ -207,13 +207,13 @@ TEST(SiteDatabase, KeepsTheSiteMapAndWhereEachRunWasPlaced) {
     EXPECT_FALSE(site.SiteMap());
     SiteMapRecord map;
     map.run_id = first_id;
-    map.resolution_m = 0.05;
-    map.origin_x_m = -3;
-    map.origin_y_m = -4;
-    map.width = 3;
-    map.height = 2;
+    map.image.resolution_m = 0.05;
+    map.image.origin_x_m = -3;
+    map.image.origin_y_m = -4;
+    map.image.width = 3;
+    map.image.height = 2;
     map.T_site_map = {0.5, 0.25, 0.1};
-    map.pixels = {0, 254, 205, 205, 0, 254};
+    map.image.pixels = {0, 254, 205, 205, 0, 254};
     site.SetSiteMap(map);
     EXPECT_THROW(site.SetSiteMap(map), InternalError);  // one map per site
   }
@@ -228,11 +228,11 @@ TEST(SiteDatabase, KeepsTheSiteMapAndWhereEachRunWasPlaced) {
   const std::optional<SiteMapRecord> map = site.SiteMap();
   ASSERT_TRUE(map);
   EXPECT_EQ(map->run_id, runs[0].run_id);
-  EXPECT_EQ(map->width, 3);
-  EXPECT_EQ(map->height, 2);
-  EXPECT_DOUBLE_EQ(map->origin_y_m, -4);
+  EXPECT_EQ(map->image.width, 3);
+  EXPECT_EQ(map->image.height, 2);
+  EXPECT_DOUBLE_EQ(map->image.origin_y_m, -4);
   EXPECT_DOUBLE_EQ(map->T_site_map.theta_rad, 0.1);
-  EXPECT_EQ(map->pixels, (std::vector<std::uint8_t>{0, 254, 205, 205, 0, 254}));
+  EXPECT_EQ(map->image.pixels, (std::vector<std::uint8_t>{0, 254, 205, 205, 0, 254}));
 }
 
 TEST(SiteDatabase, AVersionOneSiteIsMigratedOnOpen) {

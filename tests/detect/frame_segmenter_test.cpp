@@ -84,7 +84,7 @@ TEST(FrameSegmenter, RealDeskFromTumIsGroundWithObjectsOnIt) {
   raw.convertTo(depth_mm, CV_16U, 1000.0 / 5000.0);  // TUM: 5000 units per metre
   const CameraIntrinsics K{520.909, 521.007, 325.141, 249.702, 640, 480};
   const Eigen::Isometry3d T =
-      MakeIsometry({0, 0, 0.8}, {0, 40.0 * M_PI / 180.0, 0}) * sim::T_body_optical();
+      MakeIsometry({0, 0, 0.8}, {0, 40.0 * M_PI / 180.0, 0}) * T_body_optical();
   SegmentationOptions options;
   options.ground.max_level_offset_m = 1.0;  // the desk is not at wheel level
   FrameSegmenter segmenter(options);

@@ -7,8 +7,8 @@
 namespace littermap::detect {
 namespace {
 
-TumPose Pose(TimestampNs t, double x, double y, double yaw) {
-  TumPose p;
+StampedPose Pose(TimestampNs t, double x, double y, double yaw) {
+  StampedPose p;
   p.stamp_ns = t;
   p.position_m = {x, y, 0};
   p.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()));
@@ -16,7 +16,7 @@ TumPose Pose(TimestampNs t, double x, double y, double yaw) {
 }
 
 TEST(InterpolatePose, InterpolatesPositionAndYawAcrossTheBranchCut) {
-  const std::vector<TumPose> trajectory = {Pose(0, 0, 0, 3.0), Pose(1'000'000'000, 1, 2, -3.0)};
+  const std::vector<StampedPose> trajectory = {Pose(0, 0, 0, 3.0), Pose(1'000'000'000, 1, 2, -3.0)};
   const auto T = InterpolatePose(trajectory, 250'000'000, 2.0);
   ASSERT_TRUE(T.has_value());
   EXPECT_NEAR(T->translation().x(), 0.25, 1e-9);
@@ -29,8 +29,8 @@ TEST(InterpolatePose, InterpolatesPositionAndYawAcrossTheBranchCut) {
 }
 
 TEST(InterpolatePose, RefusesOutsideTheTrajectoryAndAcrossGaps) {
-  const std::vector<TumPose> trajectory = {Pose(1'000, 0, 0, 0), Pose(2'000, 1, 0, 0),
-                                           Pose(5'000'000'000, 2, 0, 0)};
+  const std::vector<StampedPose> trajectory = {Pose(1'000, 0, 0, 0), Pose(2'000, 1, 0, 0),
+                                               Pose(5'000'000'000, 2, 0, 0)};
   EXPECT_FALSE(InterpolatePose(trajectory, 999, 0.5).has_value());
   EXPECT_TRUE(InterpolatePose(trajectory, 1'000, 0.5).has_value());
   EXPECT_FALSE(InterpolatePose(trajectory, 3'000'000'000, 0.5).has_value());

@@ -32,7 +32,7 @@ struct SyntheticScene {
 };
 
 inline Eigen::Isometry3d CameraPose() {
-  return MakeIsometry({0.2, 0, 0.5}, {0, 25.0 * M_PI / 180.0, 0}) * sim::T_body_optical();
+  return MakeIsometry({0.2, 0, 0.5}, {0, 25.0 * M_PI / 180.0, 0}) * T_body_optical();
 }
 
 // Fills colour (CV_8UC3) and depth (CV_16UC1, mm) for the intrinsics.

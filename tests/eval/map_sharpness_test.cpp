@@ -22,7 +22,6 @@ using testing::kDeg;
 using testing::Perturbed;
 using testing::RoomRun;
 using testing::RoomScans;
-using testing::Stamped;
 
 TEST(MapSharpness, TruePosesDrawTheThinnestWalls) {
   const RoomScans run = RoomRun();
@@ -66,8 +65,9 @@ TEST(MapSharpness, OnlyScansWithAPoseAndValidNearEchoesAreDrawn) {
   unposed.stamp_ns += 500'000'000;  // 0.5 s from the nearest pose
 
   // Poses 10 ms off the scans' stamps (within the default 20 ms).
-  const std::vector<StampedPose> trajectory = {Stamped(scan.stamp_ns + 10'000'000, {0, 0, 0}),
-                                               Stamped(scan.stamp_ns - 3'000'000'000, {0, 0, 0})};
+  const std::vector<StampedPose> trajectory = {
+      StampedPoseFromPlanar(scan.stamp_ns + 10'000'000, {0, 0, 0}),
+      StampedPoseFromPlanar(scan.stamp_ns - 3'000'000'000, {0, 0, 0})};
   const MapSharpness result = MeasureMapSharpness({scan, far, unposed}, PlanarPose{}, trajectory);
   EXPECT_EQ(result.scans, 3u);
   EXPECT_EQ(result.scans_drawn, 2u);
@@ -84,7 +84,7 @@ TEST(MapSharpness, RefusesWhatCannotBeMeasured) {
   const RoomScans run = RoomRun();
   EXPECT_THROW(MeasureMapSharpness(run.scans, kBaseLaser, {}), BadInputError);
   // A trajectory of another time: no scan has a pose.
-  const std::vector<StampedPose> other = {Stamped(999'000'000'000LL, {0, 0, 0})};
+  const std::vector<StampedPose> other = {StampedPoseFromPlanar(999'000'000'000LL, {0, 0, 0})};
   EXPECT_THROW(MeasureMapSharpness(run.scans, kBaseLaser, other), BadInputError);
   MapSharpnessOptions bad;
   bad.cell_size_m = 0;
@@ -93,7 +93,8 @@ TEST(MapSharpness, RefusesWhatCannotBeMeasured) {
   bad.max_range_m = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(MeasureMapSharpness(run.scans, kBaseLaser, run.truth, bad), UsageError);
   // A pose far outside any map draws nothing rather than wrapping around.
-  const std::vector<StampedPose> huge = {Stamped(run.scans[0].stamp_ns, {1e12, 0, 0})};
+  const std::vector<StampedPose> huge = {
+      StampedPoseFromPlanar(run.scans[0].stamp_ns, {1e12, 0, 0})};
   EXPECT_EQ(MeasureMapSharpness({run.scans[0]}, kBaseLaser, huge).occupied_cells, 0u);
 }
 

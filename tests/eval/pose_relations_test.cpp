@@ -13,8 +13,8 @@
 
 #include <gtest/gtest.h>
 
-#include "capture/carmen_log.hpp"
 #include "core/error.hpp"
+#include "importers/carmen_log.hpp"
 
 namespace littermap::eval {
 namespace {
@@ -126,10 +126,10 @@ TEST(PoseRelations, MalformedFilesNameTheLine) {
 // metricEvaluator 0.036 +- 0.027 m and 0.42 +- 0.46 deg, Cartographer's 0.037 +- 0.027 m (printed
 // to the millimetre and hundredth of a degree: tolerances of half a unit).
 TEST(PoseRelations, ReproducesThePublishedReferenceErrorsOnIntel) {
-  const CarmenLog log = ReadCarmenLog(std::filesystem::path(LITTERMAP_DATASETS_DIR) / "carmen" /
-                                      "intel-corrected.log.gz");
+  const importers::CarmenLog log = importers::ReadCarmenLog(
+      std::filesystem::path(LITTERMAP_DATASETS_DIR) / "carmen" / "intel-corrected.log.gz");
   std::vector<PlanarPose> reference;
-  for (const CarmenLaserRecord& scan : log.scans) reference.push_back(scan.robot_pose);
+  for (const importers::CarmenLaserRecord& scan : log.scans) reference.push_back(scan.robot_pose);
   const PoseRelationMetrics metrics =
       EvaluatePoseRelations(reference, ReadScanMapStamps(kRelations / "intel.scanmap"),
                             ReadPoseRelations(kRelations / "intel.relations"), {});

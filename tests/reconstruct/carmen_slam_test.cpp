@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "capture/tum_trajectory.hpp"
+#include "bag/tum_trajectory.hpp"
 #include "eval/trajectory_metrics.hpp"
 #include "reconstruct/icp_matcher.hpp"
 #include "reconstruct/reconstruction.hpp"
@@ -23,7 +23,7 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180;
 
-PlanarPose Planar(const TumPose& pose) {
+PlanarPose Planar(const StampedPose& pose) {
   const Eigen::Vector3d x = pose.orientation * Eigen::Vector3d::UnitX();
   return {pose.position_m.x(), pose.position_m.y(), std::atan2(x.y(), x.x())};
 }
@@ -35,7 +35,7 @@ TEST(CarmenSlam, IcpOnRealIntelScans) {
   const PlanarPose T_base_laser = ReadLaserExtrinsic(dir / "bag", {}, &warnings);
   const auto scans = ReadScans(dir / "bag", "/scan");
   ASSERT_EQ(scans.size(), 910u);
-  const auto reference = ReadTumTrajectory(dir / "ref.tum");
+  const auto reference = bag::ReadTumTrajectory(dir / "ref.tum");
   IcpOptions options;
   const auto points = [&](std::size_t i) {
     return VoxelDownsample(ScanToPoints(scans[i], T_base_laser, {}).points_base, 0.05);
@@ -76,16 +76,12 @@ WholeLog ReconstructWholeLog(const testing::TempDir& dir, const ReconstructionOp
   std::vector<std::string> warnings;
   SlamPipeline pipeline(options.slam, ReadLaserExtrinsic(dir / "bag", options, &warnings));
   ReconstructBag(dir / "bag", options, &pipeline, {});
-  std::vector<eval::StampedPose> estimate, reference, odometry;
+  std::vector<StampedPose> estimate, odometry;
   for (const ScanRecord& scan : pipeline.scans()) {
-    const TumPose pose = TumPoseFromPlanar(scan.stamp_ns, scan.T_world_base);
-    estimate.push_back({pose.stamp_ns, pose.position_m, pose.orientation});
-    const TumPose odom = TumPoseFromPlanar(scan.stamp_ns, *scan.T_odom_base);
-    odometry.push_back({odom.stamp_ns, odom.position_m, odom.orientation});
+    estimate.push_back(StampedPoseFromPlanar(scan.stamp_ns, scan.T_world_base));
+    odometry.push_back(StampedPoseFromPlanar(scan.stamp_ns, *scan.T_odom_base));
   }
-  for (const TumPose& pose : ReadTumTrajectory(dir / "ref.tum")) {
-    reference.push_back({pose.stamp_ns, pose.position_m, pose.orientation});
-  }
+  const std::vector<StampedPose> reference = bag::ReadTumTrajectory(dir / "ref.tum");
   return {eval::EvaluateTrajectory(estimate, reference, {}),
           eval::EvaluateTrajectory(odometry, reference, {}), pipeline.quality()};
 }

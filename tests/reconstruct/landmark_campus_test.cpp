@@ -12,8 +12,8 @@
 #include <numbers>
 #include <vector>
 
-#include "capture/carmen_laser.hpp"
-#include "capture/carmen_log.hpp"
+#include "importers/carmen_laser.hpp"
+#include "importers/carmen_log.hpp"
 #include "reconstruct/landmark_extraction.hpp"
 
 namespace littermap::reconstruct {
@@ -37,11 +37,11 @@ TEST(LandmarkCampusTest, RoundObstaclesAreFoundWhereTheyAreFromEverySide) {
   const auto path =
       std::filesystem::path(LITTERMAP_DATASETS_DIR) / "carmen" / "freiburg-campus-corrected.log.gz";
   ASSERT_TRUE(std::filesystem::exists(path)) << "missing data set " << path;
-  const CarmenLog log = ReadCarmenLog(path);
-  const CarmenRangeLimits limits = CarmenRanges(log.scans);
+  const importers::CarmenLog log = importers::ReadCarmenLog(path);
+  const importers::CarmenRangeLimits limits = importers::CarmenRanges(log.scans);
   std::vector<Sighting> sightings;
-  for (const CarmenLaserRecord& scan : log.scans) {
-    const CarmenBeamGeometry beams = CarmenBeams(scan);
+  for (const importers::CarmenLaserRecord& scan : log.scans) {
+    const importers::CarmenBeamGeometry beams = importers::CarmenBeams(scan);
     Points2 points;
     for (std::size_t i = 0; i < scan.ranges_m.size(); ++i) {
       const double r = scan.ranges_m[i];

@@ -111,7 +111,7 @@ TEST(OccupancyMapFile, ReadsBackWhatTheGridWrote) {
   grid.InsertScan({0, 0}, hits);
   grid.InsertScan({0, 0}, hits);
   grid.WritePgmYaml(dir / "map.pgm", dir / "map.yaml");
-  const OccupancyMapImage map = ReadOccupancyMap(dir / "map.yaml");
+  const OccupancyImage map = ReadOccupancyMap(dir / "map.yaml");
   EXPECT_EQ(map.width, grid.width());
   EXPECT_EQ(map.height, grid.height());
   EXPECT_DOUBLE_EQ(map.resolution_m, 0.05);

@@ -8,8 +8,8 @@
 
 #include <cmath>
 
-#include "capture/image_codec.hpp"
-#include "capture/message_header.hpp"
+#include "bag/image_codec.hpp"
+#include "bag/message_header.hpp"
 #include "core/pose3.hpp"
 #include "tum_pair.hpp"
 
@@ -26,15 +26,16 @@ Eigen::Isometry3d BaseCamera() {
   return T;
 }
 
-CompressedRgbd Compress(const RgbdImage& image, TimestampNs stamp_ns) {
+bag::CompressedRgbd Compress(const RgbdImage& image, TimestampNs stamp_ns) {
   cv::Mat depth_mm;  // TUM depth is in 1/5000 m
   image.depth.convertTo(depth_mm, CV_16U, image.depth_unit_m * 1000);
-  const msg::Header header = MakeHeader(stamp_ns, "camera");
-  return {stamp_ns, EncodeColorJpeg(image.colour_bgr, header), EncodeDepthPng(depth_mm, header)};
+  const msg::Header header = bag::MakeHeader(stamp_ns, "camera");
+  return {stamp_ns, bag::EncodeColorJpeg(image.colour_bgr, header),
+          bag::EncodeDepthPng(depth_mm, header)};
 }
 
-RgbdImage Decode(const CompressedRgbd& frame) {
-  return {DecodeColor(frame.colour), DecodeDepthMm(frame.depth), 0.001};
+RgbdImage Decode(const bag::CompressedRgbd& frame) {
+  return {bag::DecodeColor(frame.colour), bag::DecodeDepthMm(frame.depth), 0.001};
 }
 
 class RgbdTrackerTest : public testing::Test {
@@ -67,7 +68,7 @@ class RgbdTrackerTest : public testing::Test {
 
   const PlanarPose kKeyFramePose{3, -2, 0.4};
   RgbdCameraModel camera_;
-  CompressedRgbd frame1_, frame2_;
+  bag::CompressedRgbd frame1_, frame2_;
   KeyFrameMap map_{KeyFrameMapOptions{}, IcpOptions{}};
 };
 

@@ -24,23 +24,21 @@ using testing::kDeg;
 using testing::Perturbed;
 using testing::RoomRun;
 using testing::RoomScans;
-using testing::Stamped;
 
-std::vector<eval::StampedPose> ToStamped(
-    const std::vector<std::pair<TimestampNs, PlanarPose>>& poses) {
-  std::vector<eval::StampedPose> stamped;
-  for (const auto& [stamp_ns, pose] : poses) stamped.push_back(Stamped(stamp_ns, pose));
+std::vector<StampedPose> ToStamped(const std::vector<std::pair<TimestampNs, PlanarPose>>& poses) {
+  std::vector<StampedPose> stamped;
+  for (const auto& [stamp_ns, pose] : poses)
+    stamped.push_back(StampedPoseFromPlanar(stamp_ns, pose));
   return stamped;
 }
 
-double AteM(const std::vector<eval::StampedPose>& estimate,
-            const std::vector<eval::StampedPose>& reference) {
+double AteM(const std::vector<StampedPose>& estimate, const std::vector<StampedPose>& reference) {
   return eval::EvaluateTrajectory(estimate, reference, {}).ate_rmse_m;
 }
 
 // The trajectory's pose of every scan, as the CLI looks it up.
 std::vector<std::optional<PlanarPose>> PosesOf(const RoomScans& run,
-                                               const std::vector<eval::StampedPose>& trajectory) {
+                                               const std::vector<StampedPose>& trajectory) {
   std::vector<TimestampNs> stamps_ns;
   for (const LaserScan& scan : run.scans) stamps_ns.push_back(scan.stamp_ns);
   return eval::PlanarPosesAt(trajectory, stamps_ns, 0.02);
@@ -69,10 +67,10 @@ TEST(ScanSettling, NoisyPosesSettleOntoTheTruth) {
   const RoomScans run = RoomRun();
   // Pose errors of a good SLAM result's size, and 2.5 times that.
   for (const double sigma_m : {0.02, 0.05}) {
-    const std::vector<eval::StampedPose> noisy = Perturbed(run.truth, sigma_m, sigma_m * 25 * kDeg);
+    const std::vector<StampedPose> noisy = Perturbed(run.truth, sigma_m, sigma_m * 25 * kDeg);
     const ScanSettling settling = SettleOnScans(run.scans, PosesOf(run, noisy), kBaseLaser);
-    const std::vector<eval::StampedPose> given = ToStamped(settling.given);
-    const std::vector<eval::StampedPose> settled = ToStamped(settling.settled);
+    const std::vector<StampedPose> given = ToStamped(settling.given);
+    const std::vector<StampedPose> settled = ToStamped(settling.settled);
     const double error_m = AteM(given, run.truth);
     const double settled_error_m = AteM(settled, run.truth);
     const double moved_m = AteM(given, settled);

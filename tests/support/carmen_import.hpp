@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <string>
 
-#include "capture/carmen_importer.hpp"
 #include "core/error.hpp"
+#include "importers/carmen_importer.hpp"
 
 namespace littermap::testing {
 
@@ -20,11 +20,11 @@ inline void ImportCarmen(const std::string& name, int odometry_noise_seed,
   const auto log =
       std::filesystem::path(LITTERMAP_DATASETS_DIR) / "carmen" / (name + "-corrected.log.gz");
   ASSERT_TRUE(std::filesystem::exists(log)) << "missing data set " << log;
-  CarmenImportOptions options;
+  importers::CarmenImportOptions options;
   options.reference_path = dir / "ref.tum";
   options.odometry_noise_seed = static_cast<std::uint64_t>(odometry_noise_seed);
   try {
-    ImportCarmenLog(log, dir / "bag", options);
+    importers::ImportCarmenLog(log, dir / "bag", options);
   } catch (const Error& error) {
     FAIL() << "importing " << log << ": " << error.what();
   }

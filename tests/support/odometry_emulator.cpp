@@ -39,8 +39,9 @@ bool WriteAll(int fd, bool socket, const std::string& text) {
 
 }  // namespace
 
-OdometryReading OdometryEmulatorReading(std::uint64_t k, const OdometryEmulatorOptions& options) {
-  OdometryReading reading;
+capture::OdometryReading OdometryEmulatorReading(std::uint64_t k,
+                                                 const OdometryEmulatorOptions& options) {
+  capture::OdometryReading reading;
   const double t_s = static_cast<double>(k) / options.rate_hz;
   reading.time_ms = options.first_time_ms + static_cast<std::uint64_t>(std::llround(t_s * 1000));
   reading.T_odom_base = {0.5 * t_s, 0.02 * t_s, 0.05 * t_s};
@@ -99,8 +100,8 @@ void OdometryEmulator::Stream(int fd) {
       disconnected_once_ = true;
       return;
     }
-    std::string line =
-        FormatOdometryLine(OdometryEmulatorReading(static_cast<std::uint64_t>(k), options_));
+    std::string line = capture::FormatOdometryLine(
+        OdometryEmulatorReading(static_cast<std::uint64_t>(k), options_));
     if (options_.bad_checksum_every > 0 && k % options_.bad_checksum_every == 0) {
       line.back() = line.back() == '0' ? '1' : '0';
     }

@@ -20,7 +20,8 @@ struct OdometryEmulatorOptions {
   int bad_checksum_every = 0;          // every Nth reading (N > 0) has a wrong checksum
 };
 
-OdometryReading OdometryEmulatorReading(std::uint64_t k, const OdometryEmulatorOptions& options);
+capture::OdometryReading OdometryEmulatorReading(std::uint64_t k,
+                                                 const OdometryEmulatorOptions& options);
 
 class OdometryEmulator {
  public:

@@ -15,22 +15,11 @@
 
 namespace littermap::testing {
 
-using eval::StampedPose;
-
 // A square room [2 cm, 10.02 m]^2: its walls run through the middle of 5 cm cells, not along
 // cell borders (where rounding would split a wall over two rows).
 constexpr double kWallM = 0.02;
 constexpr double kRoomM = 10;
 constexpr double kDeg = std::numbers::pi / 180;
-
-inline StampedPose Stamped(TimestampNs stamp_ns, const PlanarPose& pose) {
-  StampedPose stamped;
-  stamped.stamp_ns = stamp_ns;
-  stamped.position_m = {pose.x_m, pose.y_m, 0};
-  stamped.orientation =
-      Eigen::Quaterniond(Eigen::AngleAxisd(pose.theta_rad, Eigen::Vector3d::UnitZ()));
-  return stamped;
-}
 
 // Range from (x, y) along world angle a to the room's walls.
 inline double RangeToWalls(double x, double y, double a) {
@@ -73,7 +62,7 @@ inline RoomScans RoomRun() {
     const PlanarPose T_world_base{5 + 3 * std::cos(phase), 5 + 3 * std::sin(phase),
                                   phase + std::numbers::pi / 2};
     const TimestampNs stamp_ns = 1'000'000'000LL + k * 100'000'000LL;
-    run.truth.push_back(Stamped(stamp_ns, T_world_base));
+    run.truth.push_back(StampedPoseFromPlanar(stamp_ns, T_world_base));
     run.scans.push_back(ScanFrom(Compose(T_world_base, kBaseLaser), stamp_ns));
   }
   return run;
@@ -87,9 +76,10 @@ inline std::vector<StampedPose> Perturbed(const std::vector<StampedPose>& poses,
   for (const StampedPose& pose : poses) {
     const double yaw = std::atan2(pose.orientation.toRotationMatrix()(1, 0),
                                   pose.orientation.toRotationMatrix()(0, 0));
-    perturbed.push_back(Stamped(pose.stamp_ns, {pose.position_m.x() + sigma_m * normal(random),
-                                                pose.position_m.y() + sigma_m * normal(random),
-                                                yaw + sigma_rad * normal(random)}));
+    perturbed.push_back(StampedPoseFromPlanar(
+        pose.stamp_ns,
+        {pose.position_m.x() + sigma_m * normal(random),
+         pose.position_m.y() + sigma_m * normal(random), yaw + sigma_rad * normal(random)}));
   }
   return perturbed;
 }

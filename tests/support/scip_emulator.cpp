@@ -33,7 +33,7 @@ std::int64_t NowMs() {
 std::string InfoLine(const std::string& key, const std::string& value,
                      bool sum_includes_semicolon) {
   const std::string text = key + ":" + value;
-  return text + ";" + ScipChecksum(sum_includes_semicolon ? text + ";" : text) + "\n";
+  return text + ";" + capture::ScipChecksum(sum_includes_semicolon ? text + ";" : text) + "\n";
 }
 
 bool AllDigits(const std::string& s) {
@@ -174,7 +174,7 @@ void ScipEmulator::Handle(const std::string& command) {
     const int last = std::atoi(command.substr(6, 4).c_str());
     const int cluster = std::max(std::atoi(command.substr(10, 2).c_str()), 1);
     if (first > last || last > options_.last_step || first < options_.first_step) {
-      out_ += command + "\n" + WithScipChecksum("04") + "\n\n";  // end step out of range
+      out_ += command + "\n" + capture::WithScipChecksum("04") + "\n\n";  // end step out of range
       return;
     }
     out_ += command + "\n00P\n\n";
@@ -185,7 +185,7 @@ void ScipEmulator::Handle(const std::string& command) {
     streaming_ = true;
     next_frame_ms_ = NowMs() + options_.scan_period_ms;
   } else {
-    out_ += command + "\n" + WithScipChecksum("0E") + "\n\n";  // undefined command
+    out_ += command + "\n" + capture::WithScipChecksum("0E") + "\n\n";  // undefined command
   }
 }
 
@@ -216,13 +216,13 @@ void ScipEmulator::QueueFrame() {
   const std::string echo = "MD" + md_params_ + "00";  // remaining scans: 00 = unlimited
   ++frames_sent_;
   if (frame == options_.error_status_frame) {
-    out_ += echo + "\n" + WithScipChecksum("50") + "\n\n";
+    out_ += echo + "\n" + capture::WithScipChecksum("50") + "\n\n";
     return;
   }
   const std::uint32_t stamp =
       (options_.first_timestamp_ms + static_cast<std::uint32_t>(frame * options_.scan_period_ms)) &
       0xFFFFFFu;
-  out_ += echo + "\n99b\n" + WithScipChecksum(ScipEncode(stamp, 4)) + "\n";
+  out_ += echo + "\n99b\n" + capture::WithScipChecksum(capture::ScipEncode(stamp, 4)) + "\n";
   std::string data;
   for (int step = md_first_; step <= md_last_; step += md_cluster_) {
     // A cluster reports its smallest valid reading (§8.1).
@@ -234,12 +234,12 @@ void ScipEmulator::QueueFrame() {
         value = r;
       }
     }
-    data += ScipEncode(value, 3);
+    data += capture::ScipEncode(value, 3);
   }
   int line = 0;
   for (std::size_t i = 0; i < data.size(); ++line) {
     const std::size_t length = (frame == options_.long_line_frame && line == 0) ? 70 : 64;
-    std::string text = WithScipChecksum(data.substr(i, length));
+    std::string text = capture::WithScipChecksum(data.substr(i, length));
     i += length;
     if (frame == options_.bad_checksum_frame && line == 1) {
       text.back() = static_cast<char>(0x30 + ((text.back() - 0x30 + 1) & 0x3F));

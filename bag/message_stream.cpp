@@ -1,0 +1,56 @@
+#include "bag/message_stream.hpp"
+
+#include <algorithm>
+
+namespace littermap::bag {
+namespace {
+
+// Tries each alternative of AnyMessage whose ROS type name matches.
+template <std::size_t I = 0>
+bool DecodeAny(const BagReader& reader, const BagMessage& raw, AnyMessage& out) {
+  if constexpr (I == std::variant_size_v<AnyMessage>) {
+    return false;
+  } else {
+    using M = std::variant_alternative_t<I, AnyMessage>;
+    if (raw.topic->type == MessageTraits<M>::kTypeName) {
+      out = DecodeBagMessage<M>(reader, raw);
+      return true;
+    }
+    return DecodeAny<I + 1>(reader, raw, out);
+  }
+}
+
+}  // namespace
+
+void ThrowUndecodable(const BagReader& reader, const BagMessage& message,
+                      const std::string& reason) {
+  throw BadInputError(reader.directory().string() + ": topic '" + message.topic->name +
+                      "' message #" + std::to_string(message.index) +
+                      " (t=" + std::to_string(message.timestamp_ns) + " ns): " + reason);
+}
+
+std::optional<DecodedMessage> MessageStream::Next() {
+  while (auto raw = reader_.Next()) {
+    if (raw->topic->serialization_format != "cdr") {
+      ThrowUndecodable(reader_, *raw,
+                       "serialization format '" + raw->topic->serialization_format +
+                           "' is not supported (only cdr)");
+    }
+    DecodedMessage decoded;
+    if (!DecodeAny(reader_, *raw, decoded.message)) {
+      const std::string& name = raw->topic->name;
+      if (std::find(warned_topics_.begin(), warned_topics_.end(), name) == warned_topics_.end()) {
+        warned_topics_.push_back(name);
+        warnings_.push_back(name + ": type " + raw->topic->type + " is not used; skipped");
+      }
+      continue;
+    }
+    decoded.topic = raw->topic;
+    decoded.timestamp_ns = raw->timestamp_ns;
+    decoded.index = raw->index;
+    return decoded;
+  }
+  return std::nullopt;
+}
+
+}  // namespace littermap::bag

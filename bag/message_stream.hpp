@@ -1,0 +1,63 @@
+#pragma once
+// Decoded messages from a bag in time order. Types littermap does not know are skipped with one
+// warning per topic; a message that does not decode is a BadInputError naming the bag, topic and
+// message index, never a crash.
+
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "bag/bag_reader.hpp"
+#include "bag/ros_codec.hpp"
+
+namespace littermap::bag {
+
+using AnyMessage =
+    std::variant<msg::LaserScan, msg::Odometry, msg::CompressedImage, msg::Image, msg::CameraInfo,
+                 msg::Imu, msg::NavSatFix, msg::TFMessage, msg::String>;
+
+struct DecodedMessage {
+  const TopicInfo* topic = nullptr;
+  TimestampNs timestamp_ns = 0;
+  std::uint64_t index = 0;
+  AnyMessage message;
+};
+
+// Decodes one raw message as M, with an error that says where the message came from.
+template <typename M>
+M DecodeBagMessage(const BagReader& reader, const BagMessage& message);
+
+class MessageStream {
+ public:
+  explicit MessageStream(BagReader& reader) : reader_(reader) {}
+
+  std::optional<DecodedMessage> Next();
+  // One line per topic whose type was not understood, e.g. "/foo: unknown type pkg/msg/Bar".
+  const std::vector<std::string>& warnings() const { return warnings_; }
+
+ private:
+  BagReader& reader_;
+  std::vector<std::string> warnings_;
+  std::vector<std::string> warned_topics_;
+};
+
+// Implementation detail shared by the template and the stream.
+[[noreturn]] void ThrowUndecodable(const BagReader& reader, const BagMessage& message,
+                                   const std::string& reason);
+
+template <typename M>
+M DecodeBagMessage(const BagReader& reader, const BagMessage& message) {
+  if (message.topic->type != MessageTraits<M>::kTypeName) {
+    ThrowUndecodable(reader, message,
+                     "has type " + message.topic->type + ", expected " +
+                         std::string(MessageTraits<M>::kTypeName));
+  }
+  try {
+    return Decode<M>(message.data);
+  } catch (const cdr::CdrError& e) {
+    ThrowUndecodable(reader, message, e.what());
+  }
+}
+
+}  // namespace littermap::bag
