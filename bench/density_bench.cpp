@@ -9,7 +9,7 @@
 
 #include "bench/lawn_mower.hpp"
 #include "heatmap/density_map.hpp"
-#include "heatmap/survey_effort.hpp"
+#include "site/survey_effort.hpp"
 
 namespace {
 
@@ -53,7 +53,7 @@ void BM_SurveyEffortOneRun(benchmark::State& state) {
   const std::vector<littermap::PlanarPose> run =
       littermap::bench::LawnMowerRun(100.0, 100.0, 100.0);
   for (auto _ : state) {
-    auto coverage = littermap::heatmap::CoverRun(grid, run, {});
+    auto coverage = littermap::site::CoverRun(grid, run, {});
     benchmark::DoNotOptimize(coverage.observed.data());
   }
 }

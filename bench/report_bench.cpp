@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "bench/lawn_mower.hpp"
-#include "heatmap/run_ingest.hpp"
+#include "site/run_ingest.hpp"
 #include "reports/report_files.hpp"
 
 namespace {
@@ -36,7 +36,7 @@ fs::path SurveyedSite(int runs) {
   const char* classes[] = {"bottle", "can", "cup", "carton", "food_container", "plastic_bag"};
   std::vector<littermap::db::PointXY> litter;
   for (int r = 0; r < runs; ++r) {
-    littermap::heatmap::RunInput run;
+    littermap::site::RunInput run;
     run.name = "run " + std::to_string(r + 1);
     run.source_digest = "bench-" + std::to_string(r);
     run.start_time_s = 1.79e9 + r * 7 * 86400.0;
@@ -56,7 +56,7 @@ fs::path SurveyedSite(int runs) {
                            0.1,
                            0.9});
     }
-    littermap::heatmap::IngestRun(site, run, {});
+    littermap::site::IngestRun(site, run, {});
   }
   return file;
 }

@@ -1,6 +1,6 @@
 // littermap survey BAG --site SITE.gpkg [-o OUT] [--force]: the main job in one command.
-// reconstruct -> detect -> ingest -> heatmap -> report, each stage exactly the subcommand of the
-// same name, into
+// reconstruct -> detect -> ingest -> heatmap -> report, each stage the function the subcommand
+// of the same name runs with its defaults (cli/run_stages.hpp), into
 //   OUT/run/      trajectory, map, quality, items and detections of the run
 //   OUT/maps/     density and effort GeoTIFFs, density.png, hotspots and items as CSV/GeoJSON
 //   OUT/report/   index.html and report.json of the whole site
@@ -20,12 +20,14 @@
 #include <vector>
 
 #include "cli/cli_context.hpp"
-#include "cli/ingest_command.hpp"
 #include "cli/report_command.hpp"
+#include "cli/run_stages.hpp"
 #include "core/error.hpp"
 #include "db/site_database.hpp"
 #include "reports/class_palette.hpp"
 #include "reports/report_files.hpp"
+#include "run/run_digest.hpp"
+#include "run/run_files.hpp"
 
 namespace littermap::cli {
 namespace {
@@ -69,22 +71,6 @@ bool UpToDate(const Stage& stage, const fs::path& marker) {
   });
 }
 
-// Runs a littermap subcommand in this process, as if it had been given on the command line.
-void RunSubcommand(CliContext& context, void (*register_command)(CLI::App&, CliContext&),
-                   std::vector<std::string> arguments) {
-  CLI::App app;
-  register_command(app, context);
-  std::reverse(arguments.begin(), arguments.end());  // CLI11 takes them last first
-  try {
-    app.parse(arguments);
-  } catch (const CLI::ParseError& e) {
-    throw InternalError(std::string("survey: cannot pass arguments on: ") + e.what());
-  }
-  std::function<void()> run = std::move(context.run);
-  context.run = nullptr;
-  run();
-}
-
 db::SiteDatabase OpenOrCreateSite(const SurveyArguments& arguments) {
   if (fs::exists(arguments.site)) return db::SiteDatabase::Open(arguments.site);
   db::SiteOptions options;
@@ -102,7 +88,7 @@ db::SiteDatabase OpenOrCreateSite(const SurveyArguments& arguments) {
 void CheckNotIngestedDifferently(const SurveyArguments& arguments, const fs::path& run_dir,
                                  const std::string& name) {
   db::SiteDatabase site = db::SiteDatabase::Open(arguments.site);
-  const std::string digest = RunDigest(FindRunDirectoryFiles(run_dir));
+  const std::string digest = run::RunDigest(run::FindRunDirectoryFiles(run_dir));
   for (const db::RunRecord& run : site.Runs()) {
     if (run.name == name && run.source_digest != digest) {
       throw BadInputError(arguments.site + ": already holds a run named '" + name +
@@ -160,43 +146,31 @@ void RunSurvey(const SurveyArguments& arguments, CliContext& context) {
 
   const std::vector<fs::path> bag_files = FilesIn(bag);
   const std::string model = arguments.model.empty() ? LITTERMAP_DEFAULT_MODEL : arguments.model;
+  const run::RunFiles files(run_dir);
   std::vector<fs::path> detect_inputs = bag_files;
-  detect_inputs.push_back(run_dir / "trajectory.tum");
+  detect_inputs.push_back(files.trajectory());
   detect_inputs.push_back(model);
-  std::vector<std::string> detect_arguments = {"detect",         bag.string(), "--run",
-                                               run_dir.string(), "--model",    model};
-  if (arguments.every > 0) {
-    detect_arguments.insert(detect_arguments.end(), {"--every", std::to_string(arguments.every)});
-  }
+  run::DetectRunOptions detect;
+  detect.model = model;
+  if (arguments.every > 0) detect.objects.every = static_cast<std::size_t>(arguments.every);
   reports::SiteReport report;
   const std::vector<Stage> stages = {
       {"reconstruct",
        bag_files,
-       {run_dir / "trajectory.tum", run_dir / "map.yaml", run_dir / "map.pgm",
-        run_dir / "quality.json"},
-       [&] {
-         RunSubcommand(context, RegisterReconstructCommand,
-                       {"reconstruct", bag.string(), "-o", run_dir.string()});
-       }},
+       {files.trajectory(), files.map_yaml(), files.map_pgm(), files.quality()},
+       [&] { ReconstructStage(bag, run_dir, {}, context); }},
       {"detect",
        detect_inputs,
-       {run_dir / "items.csv", run_dir / "detections.csv"},
-       [&] { RunSubcommand(context, RegisterDetectCommand, detect_arguments); }},
+       {files.items(), files.detections()},
+       [&] { DetectStage(bag, run_dir, detect, context); }},
       {"ingest",
        {},
        {},
        [&] {
          CheckNotIngestedDifferently(arguments, run_dir, name);
-         RunSubcommand(context, RegisterIngestCommand,
-                       {"ingest", arguments.site, run_dir.string(), "--name", name});
+         IngestStage(arguments.site, run_dir, name, context);
        }},
-      {"heatmap",
-       {},
-       {},
-       [&] {
-         RunSubcommand(context, RegisterHeatmapCommand,
-                       {"heatmap", arguments.site, "-o", maps_dir.string()});
-       }},
+      {"heatmap", {}, {}, [&] { HeatmapStage(arguments.site, maps_dir, context); }},
       {"report",
        {},
        {},

@@ -17,12 +17,12 @@ namespace {
 
 void ParseOneLine(std::string_view line) {
   try {
-    const littermap::CarmenRecord record = littermap::ParseCarmenLine(line);
-    if (const auto* laser = std::get_if<littermap::CarmenLaserRecord>(&record)) {
+    const littermap::importers::CarmenRecord record = littermap::importers::ParseCarmenLine(line);
+    if (const auto* laser = std::get_if<littermap::importers::CarmenLaserRecord>(&record)) {
       if (laser->ranges_m.empty()) __builtin_trap();  // the parser promises at least one beam
-      const std::span<const littermap::CarmenLaserRecord> scans(laser, 1);
-      const littermap::CarmenRangeLimits limits = littermap::CarmenRanges(scans);
-      const auto scan = littermap::ToLaserScan(*laser, {}, limits);
+      const std::span<const littermap::importers::CarmenLaserRecord> scans(laser, 1);
+      const littermap::importers::CarmenRangeLimits limits = littermap::importers::CarmenRanges(scans);
+      const auto scan = littermap::importers::ToLaserScan(*laser, {}, limits);
       if (scan.ranges.size() != laser->ranges_m.size()) __builtin_trap();
     }
   } catch (const littermap::BadInputError&) {

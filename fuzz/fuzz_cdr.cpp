@@ -14,14 +14,14 @@
 
 namespace {
 
-using littermap::Decode;
-using littermap::Encode;
+using littermap::bag::Decode;
+using littermap::bag::Encode;
 
 template <typename M>
 void DecodeAs(std::span<const std::uint8_t> bytes) {
   try {
-    const std::vector<std::uint8_t> encoded = bag::Encode(bag::Decode<M>(bytes));
-    if (bag::Encode(bag::Decode<M>(encoded)) != encoded) __builtin_trap();
+    const std::vector<std::uint8_t> encoded = Encode(Decode<M>(bytes));
+    if (Encode(Decode<M>(encoded)) != encoded) __builtin_trap();
   } catch (const littermap::Error&) {
     // Expected for malformed input.
   }

@@ -11,10 +11,10 @@
 #include <random>
 
 #include "heatmap/kernel_density.hpp"
-#include "heatmap/run_ingest.hpp"
 #include "heatmap/site_heatmap.hpp"
 #include "sim/simulation.hpp"
 #include "sim/world_spec.hpp"
+#include "site/run_ingest.hpp"
 #include "support/temp_dir.hpp"
 
 namespace littermap::heatmap {
@@ -37,12 +37,12 @@ std::vector<PlanarPose> Route(const std::vector<db::PointXY>& waypoints) {
 }
 
 // A 40 x 30 m park: three litter clusters (around a bench, a bin, a path edge) and a scatter.
-std::vector<RunItem> ParkLitter() {
+std::vector<site::RunItem> ParkLitter() {
   std::mt19937 random(11);
   std::normal_distribution<double> spread(0.0, 2.0);
   std::uniform_real_distribution<double> x(1.0, 39.0), y(1.0, 29.0);
   const db::PointXY centres[] = {{10, 8}, {30, 20}, {20, 15}};
-  std::vector<RunItem> items;
+  std::vector<site::RunItem> items;
   for (const db::PointXY& centre : centres) {
     for (int i = 0; i < 40; ++i) {
       items.push_back({std::to_string(items.size()),
@@ -77,24 +77,24 @@ TEST(SiteHeatmap, ThreeRunsCorrelateWithTheTrueDensity) {
   db::SiteOptions site_options;
   site_options.name = "synthetic park";
   db::SiteDatabase site = db::SiteDatabase::Create(dir / "park.gpkg", site_options);
-  const std::vector<RunItem> litter = ParkLitter();
+  const std::vector<site::RunItem> litter = ParkLitter();
   const std::vector<std::vector<db::PointXY>> routes = {
       {{4, 4}, {36, 4}, {36, 26}, {4, 26}, {4, 8}},                                // loop
       {{3, 6}, {37, 6}, {37, 12}, {3, 12}, {3, 18}, {37, 18}, {37, 24}, {3, 24}},  // mower
       {{2, 2}, {12, 28}, {20, 2}, {28, 28}, {38, 2}, {38, 15}, {2, 15}}};          // zigzag
-  IngestOptions options;
+  site::IngestOptions options;
   options.drop_unobserved_items = true;  // the camera only finds what it covered
   for (std::size_t i = 0; i < routes.size(); ++i) {
-    RunInput run;
+    site::RunInput run;
     run.name = run.source_digest = "run" + std::to_string(i);
     run.start_time_s = 1000.0 * static_cast<double>(i);
     run.T_site_base = Route(routes[i]);
     run.items = litter;
-    IngestRun(site, run, options);
+    site::IngestRun(site, run, options);
   }
   const SiteHeatmap map = ComputeSiteHeatmap(site, {});
   std::vector<db::PointXY> truth;
-  for (const RunItem& item : litter) truth.push_back(item.xy);
+  for (const site::RunItem& item : litter) truth.push_back(item.xy);
   const Raster true_density = KernelDensity(map.effort.grid, truth, {3.0}).density;
 
   std::vector<double> estimated, expected;
@@ -120,18 +120,17 @@ TEST(SiteHeatmap, ThreeSimulatorRunsOfOneParkCorrelateWithItsLitter) {
   db::SiteOptions site_options;
   site_options.name = "park_large";
   db::SiteDatabase site = db::SiteDatabase::Create(dir / "park.gpkg", site_options);
-  sim::WorldSpec spec =
-      sim::LoadWorldSpec(std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "worlds" /
-                         "park_large.yaml");
+  sim::WorldSpec spec = sim::LoadWorldSpec(std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" /
+                                           "worlds" / "park_large.yaml");
   std::vector<db::PointXY> truth;
-  IngestOptions options;
+  site::IngestOptions options;
   options.drop_unobserved_items = true;
   const char* routes[] = {"", "perimeter", "diagonals"};
   for (std::uint64_t run = 0; run < 3; ++run) {
     spec.driven_route = routes[run];
     spec.run_seed = run + 1;
     const sim::Simulation simulation(spec);
-    RunInput input;
+    site::RunInput input;
     input.name = input.source_digest = std::string("run-") + std::to_string(run);
     input.start_time_s = 100000.0 * static_cast<double>(run);
     for (const sim::RobotState& state : simulation.states()) {
@@ -140,13 +139,17 @@ TEST(SiteHeatmap, ThreeSimulatorRunsOfOneParkCorrelateWithItsLitter) {
     std::vector<db::PointXY> litter;
     for (const sim::WorldObject& o : simulation.world().objects) {
       if (o.kind != sim::ObjectKind::kLitter) continue;
-      input.items.push_back({std::to_string(o.id), o.label, {o.center_m.x(), o.center_m.y()},
-                             o.center_m.z(), o.size(), 1.0});
+      input.items.push_back({std::to_string(o.id),
+                             o.label,
+                             {o.center_m.x(), o.center_m.y()},
+                             o.center_m.z(),
+                             o.size(),
+                             1.0});
       litter.push_back({o.center_m.x(), o.center_m.y()});
     }
     if (run == 0) truth = litter;
     EXPECT_EQ(litter.size(), truth.size()) << "one park";
-    IngestRun(site, input, options);
+    site::IngestRun(site, input, options);
   }
   const SiteHeatmap map = ComputeSiteHeatmap(site, {});
   const Raster true_density = KernelDensity(map.effort.grid, truth, {3.0}).density;

@@ -19,9 +19,9 @@ namespace {
 
 // Lowest first. The sources of a run (importers, live drivers, the simulator) sit above the
 // stages that read runs, which see only the bag module: only the command line puts them together.
-const std::vector<std::string> kOrder = {"core",        "bag",     "eval",    "db",
-                                         "reconstruct", "detect",  "heatmap", "reports",
-                                         "importers",   "capture", "sim",     "cli"};
+const std::vector<std::string> kOrder = {"core",      "bag",     "eval",    "db",   "reconstruct",
+                                         "detect",    "run",     "heatmap", "site", "reports",
+                                         "importers", "capture", "sim",     "cli"};
 
 std::size_t Rank(const std::string& module) {
   const auto it = std::find(kOrder.begin(), kOrder.end(), module);
@@ -114,7 +114,7 @@ TEST(ModuleOrder, OnlyTheCommandLineLinksTheSimulatorAndTheDrivers) {
     }
   }
   // The stages read runs through the bag module alone.
-  for (const char* stage : {"reconstruct", "detect"}) {
+  for (const char* stage : {"reconstruct", "detect", "run"}) {
     EXPECT_TRUE(Reachable(links, stage).contains("bag")) << stage;
   }
 }

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "db/site_database.hpp"
-#include "heatmap/run_ingest.hpp"
+#include "site/run_ingest.hpp"
 
 namespace littermap::reports {
 
@@ -26,9 +26,9 @@ inline std::vector<PlanarPose> EastwardTrack(double length_m) {
   return poses;
 }
 
-inline heatmap::RunInput FixtureRun(int week, double length_m,
-                                    const std::vector<heatmap::RunItem>& items) {
-  heatmap::RunInput run;
+inline site::RunInput FixtureRun(int week, double length_m,
+                                    const std::vector<site::RunItem>& items) {
+  site::RunInput run;
   run.name = "week " + std::to_string(week);
   run.source_digest = "fixture-week-" + std::to_string(week);
   run.start_time_s = kFixtureStart_s + (week - 1) * 7 * 86400.0;
@@ -43,22 +43,22 @@ inline db::SiteDatabase CreateFixtureSite(const std::filesystem::path& file,
   db::SiteOptions options;
   options.name = name;
   db::SiteDatabase site = db::SiteDatabase::Create(file, options);
-  const heatmap::RunItem a{"a", "bottle", {5, 0}, 0, 0.2, 0.9};
-  const heatmap::RunItem b{"b", "can", {10, 0}, 0, 0.1, 0.9};
-  const heatmap::RunItem c{"c", "cup", {15, 0}, 0, 0.1, 0.9};
-  const heatmap::RunItem d{"d", "bottle", {13, 0}, 0, 0.2, 0.9};
-  const heatmap::RunItem e{"e", "cup", {3, 0}, 0, 0.1, 0.9};
-  heatmap::RunItem a_again = a;
+  const site::RunItem a{"a", "bottle", {5, 0}, 0, 0.2, 0.9};
+  const site::RunItem b{"b", "can", {10, 0}, 0, 0.1, 0.9};
+  const site::RunItem c{"c", "cup", {15, 0}, 0, 0.1, 0.9};
+  const site::RunItem d{"d", "bottle", {13, 0}, 0, 0.2, 0.9};
+  const site::RunItem e{"e", "cup", {3, 0}, 0, 0.1, 0.9};
+  site::RunItem a_again = a;
   a_again.xy = {5.1, 0.05};
-  heatmap::RunInput week1 = FixtureRun(1, 20, {a, b, c});
+  site::RunInput week1 = FixtureRun(1, 20, {a, b, c});
   week1.reconstruction_quality =
       R"({"scans": 110, "routines": {"global": 90, "buffer": 0, "rgbd": 0, "odometry-only": 20},
           "key_frames": 12, "loop_closures_found": 3, "loop_closures_accepted": 2,
           "warnings": ["3 scans had too few valid ranges and were placed by odometry"]})";
-  const heatmap::IngestOptions ingest;
-  heatmap::IngestRun(site, FixtureRun(2, 20, {a_again, c, d}), ingest);
-  heatmap::IngestRun(site, week1, ingest);
-  heatmap::IngestRun(site, FixtureRun(3, 6, {a, e}), ingest);
+  const site::IngestOptions ingest;
+  site::IngestRun(site, FixtureRun(2, 20, {a_again, c, d}), ingest);
+  site::IngestRun(site, week1, ingest);
+  site::IngestRun(site, FixtureRun(3, 6, {a, e}), ingest);
   return site;
 }
 

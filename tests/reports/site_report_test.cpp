@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "heatmap/run_ingest.hpp"
+#include "site/run_ingest.hpp"
 #include "reports/fixture_site.hpp"
 #include "support/temp_dir.hpp"
 

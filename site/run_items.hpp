@@ -10,7 +10,7 @@
 
 #include "db/geometry_blob.hpp"
 
-namespace littermap::heatmap {
+namespace littermap::site {
 
 struct RunItem {
   std::string id;
@@ -25,4 +25,4 @@ struct RunItem {
 // BadInputError "FILE:LINE: ..." naming the column for a missing column or a bad number.
 std::vector<RunItem> ReadRunItems(const std::filesystem::path& file);
 
-}  // namespace littermap::heatmap
+}  // namespace littermap::site

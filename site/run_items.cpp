@@ -1,8 +1,8 @@
-#include "heatmap/run_items.hpp"
+#include "site/run_items.hpp"
 
 #include "core/csv_table.hpp"
 
-namespace littermap::heatmap {
+namespace littermap::site {
 
 std::vector<RunItem> ReadRunItems(const std::filesystem::path& file) {
   std::vector<RunItem> items;
@@ -20,4 +20,4 @@ std::vector<RunItem> ReadRunItems(const std::filesystem::path& file) {
   return items;
 }
 
-}  // namespace littermap::heatmap
+}  // namespace littermap::site

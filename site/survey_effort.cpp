@@ -1,4 +1,4 @@
-#include "heatmap/survey_effort.hpp"
+#include "site/survey_effort.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,14 +6,14 @@
 
 #include "core/error.hpp"
 
-namespace littermap::heatmap {
+namespace littermap::site {
 namespace {
 
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 
 // Marks the cells whose centres lie in the sector seen from camera pose T_site_camera.
-void MarkSector(const GridGeometry& grid, const PlanarPose& camera, const FootprintSector& sector,
-                std::vector<std::uint8_t>& observed) {
+void MarkSector(const heatmap::GridGeometry& grid, const PlanarPose& camera,
+                const FootprintSector& sector, std::vector<std::uint8_t>& observed) {
   const double far = sector.far_m;
   const int c0 = std::max(
       0, static_cast<int>(std::floor((camera.x_m - far - grid.min_x_m) / grid.cell_size_m)));
@@ -74,7 +74,7 @@ FootprintSector GroundSector(const CameraFootprintOptions& options) {
   return sector;
 }
 
-RunCoverage CoverRun(const GridGeometry& grid, std::span<const PlanarPose> trajectory,
+RunCoverage CoverRun(const heatmap::GridGeometry& grid, std::span<const PlanarPose> trajectory,
                      const CameraFootprintOptions& options) {
   const FootprintSector sector = GroundSector(options);
   const PlanarPose T_base_camera{options.mount_x_m, options.mount_y_m,
@@ -104,7 +104,7 @@ RunCoverage CoverRun(const GridGeometry& grid, std::span<const PlanarPose> traje
   return coverage;
 }
 
-void AddCoverage(Raster& effort, const RunCoverage& coverage) {
+void AddCoverage(heatmap::Raster& effort, const RunCoverage& coverage) {
   if (coverage.observed.size() != effort.values.size()) {
     throw UsageError("survey effort: coverage and effort rasters differ in size");
   }
@@ -112,4 +112,4 @@ void AddCoverage(Raster& effort, const RunCoverage& coverage) {
     effort.values[i] += coverage.observed[i];
 }
 
-}  // namespace littermap::heatmap
+}  // namespace littermap::site

@@ -1,4 +1,4 @@
-#include "heatmap/run_ingest.hpp"
+#include "site/run_ingest.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 
 #include "core/error.hpp"
 
-namespace littermap::heatmap {
+namespace littermap::site {
 namespace {
 
 // Known items by coarse cell, to find those within the radius of an observation.
@@ -78,8 +78,8 @@ db::CoverageRecord Coverage(std::span<const PlanarPose> crs_poses, const IngestO
   }
   const CameraFootprintOptions& camera = options.camera;
   const double reach = GroundSector(camera).far_m + std::hypot(camera.mount_x_m, camera.mount_y_m);
-  const GridGeometry grid =
-      GridGeometry::Covering(min_x, min_y, max_x, max_y, options.coverage_cell_size_m, reach + 1.0);
+  const heatmap::GridGeometry grid = heatmap::GridGeometry::Covering(
+      min_x, min_y, max_x, max_y, options.coverage_cell_size_m, reach + 1.0);
   RunCoverage run = CoverRun(grid, crs_poses, camera);
   db::CoverageRecord record;
   record.cell_size_m = grid.cell_size_m;
@@ -192,24 +192,4 @@ IngestResult IngestRun(db::SiteDatabase& site, const RunInput& run, const Ingest
   return result;
 }
 
-std::string DigestFiles(std::span<const std::filesystem::path> files) {
-  std::uint64_t hash = 1469598103934665603ull;  // FNV-1a 64 offset basis
-  for (const auto& file : files) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw BadInputError(file.string() + ": cannot open");
-    char buffer[65536];
-    while (in.read(buffer, sizeof(buffer)) || in.gcount() > 0) {
-      for (std::streamsize i = 0; i < in.gcount(); ++i) {
-        hash ^= static_cast<unsigned char>(buffer[i]);
-        hash *= 1099511628211ull;  // FNV prime
-      }
-    }
-    hash ^= 0xff;  // file separator
-    hash *= 1099511628211ull;
-  }
-  char text[17];
-  std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(hash));
-  return text;
-}
-
-}  // namespace littermap::heatmap
+}  // namespace littermap::site

@@ -1,7 +1,7 @@
 // Ingest into a site database: idempotency, item persistence across runs, coverage, and the
 // site heatmap built from what was ingested.
 
-#include "heatmap/run_ingest.hpp"
+#include "site/run_ingest.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include "heatmap/site_heatmap.hpp"
 #include "support/temp_dir.hpp"
 
-namespace littermap::heatmap {
+namespace littermap::site {
 namespace {
 
 using littermap::testing::TempDir;
@@ -153,8 +153,8 @@ TEST_F(RunIngestTest, SiteHeatmapSumsEffortAndSelectsRuns) {
   IngestRun(site, a, {});
   IngestRun(site, b, {});
 
-  SiteHeatmapOptions options;
-  SiteHeatmap all = ComputeSiteHeatmap(site, options);
+  heatmap::SiteHeatmapOptions options;
+  heatmap::SiteHeatmap all = heatmap::ComputeSiteHeatmap(site, options);
   float max_effort = 0.0f;
   for (float v : all.effort.values) max_effort = std::max(max_effort, v);
   EXPECT_EQ(max_effort, 2.0f);  // the two runs overlap
@@ -162,15 +162,15 @@ TEST_F(RunIngestTest, SiteHeatmapSumsEffortAndSelectsRuns) {
   EXPECT_EQ(all.run_ids.size(), 2u);
 
   options.class_name = "can";
-  EXPECT_EQ(ComputeSiteHeatmap(site, options).items.size(), 2u);
+  EXPECT_EQ(heatmap::ComputeSiteHeatmap(site, options).items.size(), 2u);
   options.class_name.clear();
   options.to_time_s = 2000.0;  // only run a
-  const SiteHeatmap early = ComputeSiteHeatmap(site, options);
+  const heatmap::SiteHeatmap early = heatmap::ComputeSiteHeatmap(site, options);
   EXPECT_EQ(early.run_ids.size(), 1u);
   EXPECT_EQ(early.items.size(), 2u);
   options.from_time_s = 9000.0;
   options.to_time_s.reset();
-  EXPECT_THROW(ComputeSiteHeatmap(site, options), BadInputError);
+  EXPECT_THROW(heatmap::ComputeSiteHeatmap(site, options), BadInputError);
 }
 
 TEST_F(RunIngestTest, StaticLitterKeepsItsDensityWhenSurveyedMoreOften) {
@@ -181,10 +181,10 @@ TEST_F(RunIngestTest, StaticLitterKeepsItsDensityWhenSurveyedMoreOften) {
   b.items = {Item("1", "can", 10.0, 11.0)};  // still there
   IngestRun(site, a, {});
   IngestRun(site, b, {});
-  SiteHeatmapOptions options;
-  const SiteHeatmap both = ComputeSiteHeatmap(site, options);
+  heatmap::SiteHeatmapOptions options;
+  const heatmap::SiteHeatmap both = heatmap::ComputeSiteHeatmap(site, options);
   options.to_time_s = 2000.0;
-  const SiteHeatmap first = ComputeSiteHeatmap(site, options);
+  const heatmap::SiteHeatmap first = heatmap::ComputeSiteHeatmap(site, options);
   EXPECT_EQ(both.items.size(), 1u);
   EXPECT_EQ(both.detections, 2u);
   EXPECT_NEAR(both.density.max_density, first.density.max_density,
@@ -192,18 +192,5 @@ TEST_F(RunIngestTest, StaticLitterKeepsItsDensityWhenSurveyedMoreOften) {
   EXPECT_GT(first.density.max_density, 0.0f);
 }
 
-TEST(DigestFiles, ChangesWithContentAndOrder) {
-  TempDir dir;
-  std::ofstream(dir / "a") << "alpha";
-  std::ofstream(dir / "b") << "beta";
-  const std::filesystem::path ab[] = {dir / "a", dir / "b"};
-  const std::filesystem::path ba[] = {dir / "b", dir / "a"};
-  EXPECT_EQ(DigestFiles(ab), DigestFiles(ab));
-  EXPECT_NE(DigestFiles(ab), DigestFiles(ba));
-  EXPECT_EQ(DigestFiles(ab).size(), 16u);
-  const std::filesystem::path missing[] = {dir / "c"};
-  EXPECT_THROW(DigestFiles(missing), BadInputError);
-}
-
 }  // namespace
-}  // namespace littermap::heatmap
+}  // namespace littermap::site

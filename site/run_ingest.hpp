@@ -20,10 +20,10 @@
 #include "core/error.hpp"
 #include "core/planar_pose.hpp"
 #include "db/site_database.hpp"
-#include "heatmap/run_items.hpp"
-#include "heatmap/survey_effort.hpp"
+#include "site/run_items.hpp"
+#include "site/survey_effort.hpp"
 
-namespace littermap::heatmap {
+namespace littermap::site {
 
 struct IngestOptions {
   CameraFootprintOptions camera;
@@ -71,7 +71,4 @@ class SiteMapDefinedMeanwhile : public BadInputError {
 // Throws BadInputError when the run has fewer than two poses.
 IngestResult IngestRun(db::SiteDatabase& site, const RunInput& run, const IngestOptions& options);
 
-// A hex FNV-1a 64 digest of the files' bytes, in order: what identifies a run's inputs.
-std::string DigestFiles(std::span<const std::filesystem::path> files);
-
-}  // namespace littermap::heatmap
+}  // namespace littermap::site

@@ -13,7 +13,7 @@
 #include "core/planar_pose.hpp"
 #include "heatmap/raster.hpp"
 
-namespace littermap::heatmap {
+namespace littermap::site {
 
 struct CameraFootprintOptions {
   // Defaults: the Kinect-class RGB-D camera of the sample robot (640 x 480, f = 525 px, so
@@ -48,10 +48,10 @@ struct RunCoverage {
 };
 
 // T_site_base poses of one run, in time order, in the grid's coordinates.
-RunCoverage CoverRun(const GridGeometry& grid, std::span<const PlanarPose> trajectory,
+RunCoverage CoverRun(const heatmap::GridGeometry& grid, std::span<const PlanarPose> trajectory,
                      const CameraFootprintOptions& options);
 
 // Adds one run's coverage to an effort raster (surveys per cell).
-void AddCoverage(Raster& effort, const RunCoverage& coverage);
+void AddCoverage(heatmap::Raster& effort, const RunCoverage& coverage);
 
-}  // namespace littermap::heatmap
+}  // namespace littermap::site

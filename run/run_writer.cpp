@@ -1,4 +1,4 @@
-#include "reconstruct/run_writer.hpp"
+#include "run/run_writer.hpp"
 
 #include <cstdio>
 #include <fstream>
@@ -7,8 +7,12 @@
 
 #include "bag/tum_trajectory.hpp"
 #include "core/error.hpp"
+#include "run/run_files.hpp"
 
-namespace littermap::reconstruct {
+namespace littermap::run {
+
+using namespace reconstruct;  // the pipeline's types, written out here
+
 namespace {
 
 void CreateRunDirectory(const std::filesystem::path& run_dir) {
@@ -62,8 +66,8 @@ void WriteCameraPoses(const std::filesystem::path& run_dir, const SlamPipeline& 
     sources +=
         bag::FormatTumStamp(pose.stamp_ns) + ',' + std::string(SourceName(pose.source)) + '\n';
   }
-  WriteText(run_dir / "camera_sources.csv", sources);
-  bag::WriteTumTrajectory(run_dir / "camera.tum", poses);
+  WriteText(RunFiles(run_dir).camera_sources(), sources);
+  bag::WriteTumTrajectory(RunFiles(run_dir).camera(), poses);
 }
 
 }  // namespace
@@ -133,34 +137,36 @@ std::string QualityJson(const SlamQuality& quality, const ReconstructionResult& 
 void WriteRun(const std::filesystem::path& run_dir, const SlamPipeline& pipeline,
               const ReconstructionResult& result, const RgbdTracker* rgbd) {
   CreateRunDirectory(run_dir);
+  const RunFiles files(run_dir);
   std::vector<StampedPose> trajectory;
   for (const ScanRecord& scan : pipeline.scans()) {
     trajectory.push_back(StampedPoseFromPlanar(scan.stamp_ns, scan.T_world_base));
     trajectory.back().position_m.z() = scan.z_m;
   }
-  bag::WriteTumTrajectory(run_dir / "trajectory.tum", trajectory);
+  bag::WriteTumTrajectory(files.trajectory(), trajectory);
   // The odometry at the scans' times, to compare SLAM with odometry alone.
   std::vector<StampedPose> odometry;
   for (const ScanRecord& scan : pipeline.scans()) {
     if (scan.T_odom_base)
       odometry.push_back(StampedPoseFromPlanar(scan.stamp_ns, *scan.T_odom_base));
   }
-  if (!odometry.empty()) bag::WriteTumTrajectory(run_dir / "odometry.tum", odometry);
+  if (!odometry.empty()) bag::WriteTumTrajectory(files.odometry(), odometry);
   std::vector<StampedPose> key_frames;
   for (const auto& [stamp, pose] : pipeline.KeyFramePoses()) {
     key_frames.push_back(StampedPoseFromPlanar(stamp, pose));
   }
-  bag::WriteTumTrajectory(run_dir / "keyframes.tum", key_frames);
-  pipeline.map().WritePgmYaml(run_dir / "map.pgm", run_dir / "map.yaml");
-  pipeline.map().WritePng(run_dir / "map.png");
-  WriteRoutines(run_dir / "routines.csv", pipeline.scans());
+  bag::WriteTumTrajectory(files.key_frames(), key_frames);
+  pipeline.map().WritePgmYaml(files.map_pgm(), files.map_yaml());
+  pipeline.map().WritePng(files.map_png());
+  WriteRoutines(files.routines(), pipeline.scans());
   if (rgbd != nullptr) WriteCameraPoses(run_dir, pipeline, *rgbd);
-  WriteText(run_dir / "quality.json", QualityJson(pipeline.quality(), result, rgbd));
+  WriteText(files.quality(), QualityJson(pipeline.quality(), result, rgbd));
 }
 
 void WriteVisualRun(const std::filesystem::path& run_dir, const std::vector<VisualFrame>& frames,
                     const VisualOdometryStats& stats, const ReconstructionResult& result) {
   CreateRunDirectory(run_dir);
+  const RunFiles files(run_dir);
   std::vector<StampedPose> trajectory, key_frames;
   std::string routines = "time,routine,matching_ratio\n";
   char confidence[32];
@@ -173,9 +179,9 @@ void WriteVisualRun(const std::filesystem::path& run_dir, const std::vector<Visu
     trajectory.push_back(ToTum(frame.stamp_ns, frame.step.T_world_camera));
     if (frame.step.new_key_frame) key_frames.push_back(trajectory.back());
   }
-  bag::WriteTumTrajectory(run_dir / "trajectory.tum", trajectory);
-  bag::WriteTumTrajectory(run_dir / "keyframes.tum", key_frames);
-  WriteText(run_dir / "routines.csv", routines);
+  bag::WriteTumTrajectory(files.trajectory(), trajectory);
+  bag::WriteTumTrajectory(files.key_frames(), key_frames);
+  WriteText(files.routines(), routines);
   nlohmann::ordered_json json;
   json["mode"] = "visual-odometry";
   json["frames"] = stats.frames;
@@ -185,7 +191,7 @@ void WriteVisualRun(const std::filesystem::path& run_dir, const std::vector<Visu
   json["run_time_s"] = result.run_time_s;
   json["frames_per_s"] = result.scans_per_s;
   json["warnings"] = result.warnings;
-  WriteText(run_dir / "quality.json", json.dump(2) + "\n");
+  WriteText(files.quality(), json.dump(2) + "\n");
 }
 
-}  // namespace littermap::reconstruct
+}  // namespace littermap::run

@@ -1,0 +1,80 @@
+#include "heatmap/heatmap_files.hpp"
+
+#include <memory>
+#include <optional>
+#include <utility>
+
+#include "heatmap/density_preview.hpp"
+#include "heatmap/exports.hpp"
+#include "heatmap/geotiff_writer.hpp"
+#include "heatmap/wgs84_transform.hpp"
+
+namespace littermap::heatmap {
+namespace {
+
+void WriteRaster(const std::filesystem::path& file, const Raster& raster,
+                 const db::SiteFrame& frame, const std::string& citation, float nodata) {
+  GeoTiffOptions options;
+  options.epsg_code = frame.epsg_code;
+  options.citation = citation;
+  options.nodata = nodata;
+  WriteCloudOptimizedGeoTiff(file, raster, options);
+}
+
+}  // namespace
+
+HeatmapFilesResult WriteHeatmapFiles(db::SiteDatabase& site, const std::filesystem::path& dir,
+                                     HeatmapFilesOptions options) {
+  options.hotspots.separation_m = options.map.density.kernel.bandwidth_m;
+  const db::SiteFrame& frame = site.site().frame;
+  const SiteHeatmap map = ComputeSiteHeatmap(site, options.map);
+
+  std::filesystem::create_directories(dir);
+  const float nodata = options.map.density.nodata;
+  WriteRaster(dir / "density.tif", map.density.density, frame,
+              "littermap litter density, items per 100 m2 per survey", nodata);
+  WriteRaster(dir / "effort.tif", map.effort, frame, "littermap survey effort, surveys", -1.0f);
+  DensityPreviewOptions preview;
+  preview.title =
+      site.site().name + ": litter density (" + std::to_string(map.run_ids.size()) +
+      (map.run_ids.size() == 1 ? " run" : " runs") +
+      (options.map.class_name.empty() ? std::string() : ", class " + options.map.class_name) + ")";
+  if (std::optional<db::SiteMapRecord> site_map = site.SiteMap()) {
+    preview.occupancy_cell_size_m = site_map->image.resolution_m;
+    preview.occupancy = [site_map = std::move(*site_map), frame](double x_m, double y_m) {
+      return site_map.GreyAt(frame.FromCrs({x_m, y_m}));
+    };
+  }
+  WriteDensityPreview(dir / "density.png", map.density.density, nodata, preview);
+
+  std::vector<ClassifiedPoint> points;
+  for (const auto& item : map.items) points.push_back({frame.ToCrs(item.site_xy), item.class_name});
+  const auto hotspots = FindHotspots(map.density.density, nodata, points, options.hotspots);
+  std::vector<db::HotspotRecord> records;
+  for (const auto& h : hotspots) {
+    records.push_back({h.rank, frame.FromCrs(h.crs), h.density_per_100m2, h.dominant_class});
+  }
+  site.InTransaction([&] { site.ReplaceHotspots(records); });
+
+  HeatmapFilesResult result;
+  std::unique_ptr<Wgs84Transform> wgs84;
+  if (frame.georeferenced()) wgs84 = std::make_unique<Wgs84Transform>(frame.epsg_code);
+  WriteHotspotsCsv(dir / "hotspots.csv", hotspots, frame, wgs84.get());
+  WriteItemsCsv(dir / "items.csv", map.items, frame, wgs84.get());
+  if (wgs84) {
+    WriteItemsGeoJson(dir / "items.geojson", map.items, frame, *wgs84);
+  } else {
+    result.warnings.push_back(site.sql().file().string() +
+                              ": the site is not georeferenced (no --crs at 'site init'), so "
+                              "there is no items.geojson (GeoJSON is WGS 84 only)");
+  }
+  result.runs = map.run_ids.size();
+  result.items = map.items.size();
+  result.detections = map.detections;
+  result.hotspots = hotspots.size();
+  result.surveyed_area_m2 = map.density.surveyed_area_m2;
+  result.max_density_per_100m2 = static_cast<double>(map.density.max_density);
+  return result;
+}
+
+}  // namespace littermap::heatmap

@@ -1,0 +1,42 @@
+#pragma once
+// `littermap heatmap` as a library call: a site's litter maps over a selection of its runs,
+// written into one folder for GIS and people:
+//   density.tif    litter density, items per 100 m2 per survey (Cloud Optimized GeoTIFF)
+//   effort.tif     survey effort, surveys per cell
+//   density.png    a preview of the density over the site map
+//   hotspots.csv   the densest places, ranked, with their dominant class
+//   items.csv      the distinct items the runs saw; items.geojson too when the site is
+//                  georeferenced (GeoJSON is WGS 84 only)
+// The hotspots are also stored in the site, for the report.
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "db/site_database.hpp"
+#include "heatmap/hotspots.hpp"
+#include "heatmap/site_heatmap.hpp"
+
+namespace littermap::heatmap {
+
+struct HeatmapFilesOptions {
+  SiteHeatmapOptions map;
+  HotspotOptions hotspots;  // separation_m: the density's kernel bandwidth
+};
+
+struct HeatmapFilesResult {
+  std::size_t runs = 0;
+  std::size_t items = 0;
+  std::size_t detections = 0;
+  std::size_t hotspots = 0;
+  double surveyed_area_m2 = 0;
+  double max_density_per_100m2 = 0;
+  std::vector<std::string> warnings;
+};
+
+// Creates `dir` if needed. Throws BadInputError when no run matches the selection.
+HeatmapFilesResult WriteHeatmapFiles(db::SiteDatabase& site, const std::filesystem::path& dir,
+                                     HeatmapFilesOptions options);
+
+}  // namespace littermap::heatmap

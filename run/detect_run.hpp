@@ -1,0 +1,40 @@
+#pragma once
+// The detect stage of a run: segments every n-th RGB-D frame of the bag, classifies the objects,
+// places them with the run's trajectory and fuses the sightings into items, writing
+// detections.csv and items.csv (run/detections_file.hpp, run/items_file.hpp).
+// `littermap detect` and `littermap survey` both call it.
+
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+
+#include "core/progress.hpp"
+#include "detect/item_fusion.hpp"
+#include "detect/run_objects.hpp"
+
+namespace littermap::run {
+
+struct DetectRunOptions {
+  std::filesystem::path model;       // the classifier of `littermap train`
+  std::filesystem::path trajectory;  // placing the objects; empty: RUN_DIR/trajectory.tum
+  std::filesystem::path output_dir;  // where to write; empty: the run directory
+  detect::RunObjectsOptions objects;
+  detect::FusionOptions fusion;
+};
+
+struct DetectRunResult {
+  std::filesystem::path output_dir;
+  detect::RunObjectsResult objects;  // frames, objects, frames without a pose, timings
+  std::size_t litter_items = 0;      // in items.csv
+  std::size_t natural_objects = 0;
+};
+
+// `on_frame` (optional) sees each processed frame's segmentation. Throws BadInputError for a bag,
+// trajectory or model at fault, UsageError for an output that cannot be written.
+DetectRunResult DetectRun(
+    const std::filesystem::path& bag, const std::filesystem::path& run_dir,
+    const DetectRunOptions& options, const ProgressCallback& progress = {},
+    const std::function<void(const detect::RgbdFrame&, const detect::FrameSegmentation&)>&
+        on_frame = {});
+
+}  // namespace littermap::run

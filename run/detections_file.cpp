@@ -1,0 +1,36 @@
+#include "run/detections_file.hpp"
+
+#include <cstdio>
+#include <utility>
+
+#include "core/error.hpp"
+
+namespace littermap::run {
+
+DetectionsCsvWriter::DetectionsCsvWriter(std::filesystem::path file)
+    : file_(std::move(file)), out_(file_) {
+  if (!out_) throw UsageError(file_.string() + ": cannot create");
+  out_ << "frame,stamp_ns,u,v,width_px,height_px,x,y,z,size_m,height_m,range_m,class,confidence,"
+          "litter_probability,item\n";
+}
+
+void DetectionsCsvWriter::Write(const detect::PlacedObject& placed, const std::string& class_name,
+                                const detect::Classification& classification, long item) {
+  const cv::Rect& box = placed.object->box;
+  char line[400];
+  std::snprintf(
+      line, sizeof line, "%zu,%lld,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.2f,%s,%.3f,%.3f,%ld",
+      placed.frame->index, static_cast<long long>(placed.frame->stamp_ns), box.x, box.y, box.width,
+      box.height, placed.position_world_m.x(), placed.position_world_m.y(),
+      placed.position_world_m.z(), placed.object->size_m, placed.object->height_m,
+      placed.object->range_m, class_name.c_str(), classification.probabilities[classification.best],
+      classification.litter_probability, item);
+  out_ << line << '\n';
+}
+
+void DetectionsCsvWriter::Close() {
+  if (!out_.flush()) throw InternalError(file_.string() + ": write failed");
+  out_.close();
+}
+
+}  // namespace littermap::run

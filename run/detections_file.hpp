@@ -1,0 +1,32 @@
+#pragma once
+// RUN_DIR/detections.csv, every object of every processed frame, one row each:
+//   frame,stamp_ns,u,v,width_px,height_px,x,y,z,size_m,height_m,range_m,class,confidence,
+//   litter_probability,item
+// the box in pixels, the position in the run's map frame (m), the classifier's best class for
+// this one view and the fused item it joined (-1: none, e.g. clutter).
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "detect/litter_classifier.hpp"
+#include "detect/run_objects.hpp"
+
+namespace littermap::run {
+
+class DetectionsCsvWriter {
+ public:
+  // Throws UsageError if the file cannot be created.
+  explicit DetectionsCsvWriter(std::filesystem::path file);
+
+  void Write(const detect::PlacedObject& placed, const std::string& class_name,
+             const detect::Classification& classification, long item);
+  // Throws InternalError if writing failed.
+  void Close();
+
+ private:
+  std::filesystem::path file_;
+  std::ofstream out_;
+};
+
+}  // namespace littermap::run

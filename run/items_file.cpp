@@ -1,0 +1,42 @@
+#include "run/items_file.hpp"
+
+#include <cstdio>
+#include <fstream>
+
+#include "core/error.hpp"
+
+namespace littermap::run {
+
+ItemsWritten WriteItemsCsv(const std::filesystem::path& file,
+                           const std::vector<detect::LitterItem>& items,
+                           const detect::LitterClassifier& classifier) {
+  std::ofstream out(file);
+  if (!out) throw UsageError(file.string() + ": cannot create");
+  out << "id,class,x,y,z,size_m,confidence,views,litter,litter_probability,first_seen_ns,"
+         "last_seen_ns\n";
+  const std::size_t clutter = classifier.ClassIndex("clutter");
+  ItemsWritten written;
+  for (detect::LitterItem item : items) {
+    item.best_class = classifier.Decide(item.class_probabilities);
+    item.confidence = item.class_probabilities[item.best_class];
+    if (item.best_class == clutter) continue;
+    const bool litter = classifier.is_litter(item.best_class);
+    (litter ? written.litter : written.natural) += 1;
+    double litter_probability = 0;
+    for (std::size_t k = 0; k < item.class_probabilities.size(); ++k) {
+      if (classifier.is_litter(k)) litter_probability += item.class_probabilities[k];
+    }
+    char line[320];
+    std::snprintf(line, sizeof line, "%d,%s,%.3f,%.3f,%.3f,%.3f,%.3f,%d,%d,%.3f,%lld,%lld", item.id,
+                  classifier.classes()[item.best_class].c_str(), item.position_world_m.x(),
+                  item.position_world_m.y(), item.position_world_m.z(), item.size_m,
+                  item.confidence, item.views, litter ? 1 : 0, litter_probability,
+                  static_cast<long long>(item.first_seen_ns),
+                  static_cast<long long>(item.last_seen_ns));
+    out << line << '\n';
+  }
+  if (!out.flush()) throw InternalError(file.string() + ": write failed");
+  return written;
+}
+
+}  // namespace littermap::run

@@ -1,0 +1,92 @@
+#include "run/reconstruct_run.hpp"
+
+#include <memory>
+
+#include "reconstruct/rgbd_tracker.hpp"
+#include "reconstruct/slam_pipeline.hpp"
+#include "run/run_writer.hpp"
+
+namespace littermap::run {
+namespace {
+
+ReconstructRunResult ReconstructVisually(const std::filesystem::path& bag,
+                                         const std::filesystem::path& run_dir,
+                                         const reconstruct::ReconstructionOptions& options,
+                                         const ProgressCallback& progress) {
+  std::vector<reconstruct::VisualFrame> frames;
+  ReconstructRunResult run;
+  run.visual_odometry = true;
+  reconstruct::ReconstructionResult result =
+      reconstruct::ReconstructBagVisually(bag, options, &frames, &run.visual, progress);
+  result.warnings.insert(result.warnings.begin(),
+                         "no laser scans on " + options.topics.scan +
+                             ": visual odometry from the camera alone (no occupancy map)");
+  if (run.visual.segments > 1) {
+    result.warnings.push_back("tracking was lost " + std::to_string(run.visual.segments - 1) +
+                              " times; each new segment starts at the last pose known");
+  }
+  WriteVisualRun(run_dir, frames, run.visual, result);
+  run.warnings = result.warnings;
+  run.run_time_s = result.run_time_s;
+  run.scans_per_s = result.scans_per_s;
+  return run;
+}
+
+// What the quality counts say the user should know.
+void AddQualityWarnings(const reconstruct::SlamQuality& quality,
+                        std::vector<std::string>* warnings) {
+  if (quality.scans_without_echoes > 0) {
+    warnings->push_back(std::to_string(quality.scans_without_echoes) +
+                        " scans had too few valid ranges and were placed by odometry");
+  }
+  if (quality.stamps_backwards + quality.stamps_duplicate > 0) {
+    warnings->push_back(std::to_string(quality.stamps_backwards) + " scans went back in time and " +
+                        std::to_string(quality.stamps_duplicate) +
+                        " repeated a time stamp; they were dropped");
+  }
+  if (quality.odometry_missing + quality.odometry_rejected > 0) {
+    warnings->push_back("odometry missing for " + std::to_string(quality.odometry_missing) +
+                        " scans and " + "implausible for " +
+                        std::to_string(quality.odometry_rejected) +
+                        "; a constant-velocity model stood in");
+  }
+}
+
+}  // namespace
+
+ReconstructRunResult ReconstructRun(const std::filesystem::path& bag,
+                                    const std::filesystem::path& run_dir,
+                                    reconstruct::ReconstructionOptions options,
+                                    const ProgressCallback& progress) {
+  options.Validate();
+  if (!reconstruct::HasLaser(bag, options)) {
+    return ReconstructVisually(bag, run_dir, options, progress);
+  }
+  std::vector<std::string> warnings;
+  double laser_height_m = 0;
+  const PlanarPose T_base_laser =
+      reconstruct::ReadLaserExtrinsic(bag, options, &warnings, &laser_height_m);
+  // The ground-hit filter needs the height of the laser above the ground: base_link is on it.
+  if (options.slam.points.laser_height_m == 0) options.slam.points.laser_height_m = laser_height_m;
+  const std::unique_ptr<reconstruct::RgbdTracker> rgbd =
+      reconstruct::MakeRgbdTracker(bag, options, &warnings);
+  reconstruct::SlamPipeline pipeline(options.slam, T_base_laser, rgbd.get());
+  reconstruct::ReconstructionResult result =
+      reconstruct::ReconstructBag(bag, options, &pipeline, progress, rgbd.get());
+  result.warnings.insert(result.warnings.begin(), warnings.begin(), warnings.end());
+  const reconstruct::SlamQuality& quality = pipeline.quality();
+  AddQualityWarnings(quality, &result.warnings);
+  WriteRun(run_dir, pipeline, result, rgbd.get());
+  ReconstructRunResult run;
+  run.warnings = result.warnings;
+  run.run_time_s = result.run_time_s;
+  run.scans_per_s = result.scans_per_s;
+  run.poses = pipeline.scans().size();
+  run.key_frames = quality.key_frames;
+  run.loops_accepted = quality.loops_accepted;
+  run.loops_rejected = quality.loops_rejected_match + quality.loops_rejected_disagreement +
+                       quality.loops_rejected_after_optimisation;
+  return run;
+}
+
+}  // namespace littermap::run

@@ -1,0 +1,38 @@
+#pragma once
+// The reconstruct stage of a run: a run bag in, a run directory out (run/run_files.hpp). With
+// laser scans the SLAM pipeline runs (with the RGB-D routine when the bag has a camera); a bag
+// without laser scans (an imported TUM RGB-D sequence) gets visual odometry of the camera alone.
+// `littermap reconstruct` and `littermap survey` both call it.
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/progress.hpp"
+#include "reconstruct/reconstruction.hpp"
+
+namespace littermap::run {
+
+struct ReconstructRunResult {
+  bool visual_odometry = false;  // the bag had no laser scans
+  std::vector<std::string> warnings;
+  double run_time_s = 0;
+  double scans_per_s = 0;  // frames per second for visual odometry
+  // SLAM:
+  std::size_t poses = 0;
+  std::size_t key_frames = 0;
+  std::size_t loops_accepted = 0;
+  std::size_t loops_rejected = 0;
+  // Visual odometry:
+  reconstruct::VisualOdometryStats visual;
+};
+
+// Validates the options, reconstructs and writes the run directory (created if needed).
+// Throws BadInputError for a bag at fault, UsageError for a run directory that cannot be written.
+ReconstructRunResult ReconstructRun(const std::filesystem::path& bag,
+                                    const std::filesystem::path& run_dir,
+                                    reconstruct::ReconstructionOptions options,
+                                    const ProgressCallback& progress = {});
+
+}  // namespace littermap::run
