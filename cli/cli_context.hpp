@@ -44,6 +44,11 @@ void RegisterReportCommand(CLI::App& app, CliContext& context);
 void RegisterSurveyCommand(CLI::App& app, CliContext& context);
 void RegisterDetectCommand(CLI::App& app, CliContext& context);
 void RegisterTrainCommands(CLI::App& app, CliContext& context);
+// Add `eval map`, `eval settle` and `eval detections` to the `eval` command; call after
+// RegisterEvalCommands.
+void RegisterEvalMapCommand(CLI::App& app, CliContext& context);
+void RegisterEvalSettleCommand(CLI::App& app, CliContext& context);
+void RegisterEvalDetectionsCommand(CLI::App& app, CliContext& context);
 // Adds `eval segmentation` to the `eval` command; call after RegisterEvalCommands.
 void RegisterEvalSegmentationCommand(CLI::App& app, CliContext& context);
 // Adds `eval relations` to the `eval` command; call after RegisterEvalCommands.

@@ -47,6 +47,9 @@ int main(int argc, char** argv) {
   littermap::cli::RegisterDetectCommand(app, context);
   littermap::cli::RegisterTrainCommands(app, context);
   littermap::cli::RegisterEvalCommands(app, context);
+  littermap::cli::RegisterEvalDetectionsCommand(app, context);
+  littermap::cli::RegisterEvalMapCommand(app, context);
+  littermap::cli::RegisterEvalSettleCommand(app, context);
   littermap::cli::RegisterEvalSegmentationCommand(app, context);
   littermap::cli::RegisterEvalRelationsCommand(app, context);
   littermap::cli::RegisterSiteCommands(app, context);

@@ -10,6 +10,8 @@
 #include <tuple>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "core/csv_table.hpp"
 #include "core/error.hpp"
 
@@ -293,6 +295,50 @@ VisiblePixels ReadVisiblePixels(const std::filesystem::path& file) {
     largest = std::max(largest, pixels);
   });
   return visible;
+}
+
+std::string ToJson(const DetectionMetrics& metrics, const DetectionMetricsOptions& options) {
+  nlohmann::ordered_json json;
+  json["precision"] = metrics.precision;
+  json["recall"] = metrics.recall;
+  json["f1"] = metrics.f1;
+  json["true_positives"] = metrics.true_positives;
+  json["false_positives"] = metrics.false_positives;
+  json["false_negatives"] = metrics.false_negatives;
+  json["class_accuracy"] = metrics.class_accuracy;
+  json["litter_natural_accuracy"] = metrics.litter_natural_accuracy;
+  json["litter_natural_pairs"] = metrics.litter_natural_pairs;
+  json["truth_litter"] = metrics.truth_litter;
+  json["detected_litter"] = metrics.detected_litter;
+  json["ignored_detections"] = metrics.ignored_detections;
+  json["hidden_truth"] = metrics.hidden_truth;
+  json["per_class"] = nlohmann::ordered_json::object();
+  for (const ClassMetrics& c : metrics.per_class) {
+    json["per_class"][c.class_name] = {{"truth", c.truth},
+                                       {"detected", c.detected},
+                                       {"tp", c.true_positives},
+                                       {"precision", c.precision},
+                                       {"recall", c.recall}};
+  }
+  json["confusion"] = nlohmann::ordered_json::object();
+  const auto& labels = metrics.confusion_labels;
+  for (std::size_t t = 0; t < labels.size(); ++t) {
+    nlohmann::ordered_json row = nlohmann::ordered_json::object();
+    for (std::size_t p = 0; p < labels.size(); ++p) row[labels[p]] = metrics.confusion[t][p];
+    json["confusion"][labels[t]] = row;
+  }
+  json["match_radius_m"] = options.match_radius_m;
+  return json.dump(2);
+}
+
+std::vector<DetectedItem> TransformItems(std::vector<DetectedItem> items,
+                                         const Eigen::Isometry3d& T_reference_estimate) {
+  for (DetectedItem& item : items) {
+    const Eigen::Vector3d p =
+        T_reference_estimate * Eigen::Vector3d(item.position_m.x(), item.position_m.y(), 0);
+    item.position_m = p.head<2>();
+  }
+  return items;
 }
 
 }  // namespace littermap::eval

@@ -30,6 +30,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "core/object_classes.hpp"
 
@@ -101,6 +102,15 @@ DetectionMetrics EvaluateDetections(const std::vector<DetectedItem>& detected,
                                     const std::vector<TruthObject>& truth,
                                     const DetectionMetricsOptions& options,
                                     const std::optional<VisiblePixels>& visible_pixels = {});
+
+// The metrics as a JSON object (2-space indent): the counts and rates above, per_class, the
+// confusion table (rows: truth) and the match radius.
+std::string ToJson(const DetectionMetrics& metrics, const DetectionMetricsOptions& options);
+
+// Items placed in a run's own map frame, carried into the truth's frame by a rigid transform
+// (e.g. TrajectoryMetrics::T_reference_estimate of the run's trajectory onto the reference).
+std::vector<DetectedItem> TransformItems(std::vector<DetectedItem> items,
+                                         const Eigen::Isometry3d& T_reference_estimate);
 
 // Readers (core/csv_table.hpp). Columns are found by header name, in any order; extra columns
 // are ignored. Errors throw BadInputError naming FILE:LINE and the column (LINE 1: the header).

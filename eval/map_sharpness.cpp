@@ -8,6 +8,8 @@
 #include <string>
 #include <unordered_set>
 
+#include <nlohmann/json.hpp>
+
 #include "core/error.hpp"
 
 namespace littermap::eval {
@@ -65,6 +67,22 @@ MapSharpness MeasureMapSharpness(const std::vector<LaserScan>& scans,
   }
   sharpness.occupied_cells = cells.size();
   return sharpness;
+}
+
+std::string ToJson(const std::vector<std::string>& names, const std::vector<MapSharpness>& maps,
+                   const MapSharpnessOptions& options) {
+  nlohmann::ordered_json json;
+  json["cell_size_m"] = options.cell_size_m;
+  json["max_range_m"] = options.max_range_m;
+  json["trajectories"] = nlohmann::ordered_json::array();
+  for (std::size_t i = 0; i < maps.size(); ++i) {
+    json["trajectories"].push_back({{"trajectory", names.at(i)},
+                                    {"scans", maps[i].scans},
+                                    {"scans_drawn", maps[i].scans_drawn},
+                                    {"echoes_drawn", maps[i].echoes_drawn},
+                                    {"occupied_cells", maps[i].occupied_cells}});
+  }
+  return json.dump(2);
 }
 
 }  // namespace littermap::eval

@@ -40,4 +40,9 @@ MapSharpness MeasureMapSharpness(const std::vector<LaserScan>& scans,
                                  const std::vector<StampedPose>& trajectory,
                                  const MapSharpnessOptions& options = {});
 
+// The maps of several trajectories as a JSON object (2-space indent): cell_size_m, max_range_m
+// and per trajectory (named by `names`, one per result) its counts.
+std::string ToJson(const std::vector<std::string>& names, const std::vector<MapSharpness>& maps,
+                   const MapSharpnessOptions& options);
+
 }  // namespace littermap::eval

@@ -10,6 +10,8 @@
 
 #include <Eigen/Geometry>
 
+#include <nlohmann/json.hpp>
+
 #include "core/error.hpp"
 #include "core/pose3.hpp"
 
@@ -190,6 +192,19 @@ std::vector<std::optional<PlanarPose>> PlanarPosesAt(const std::vector<StampedPo
     poses.push_back(PlanarPoseNearest(sorted, stamp_ns, max_time_difference_s));
   }
   return poses;
+}
+
+std::string ToJson(const TrajectoryMetrics& metrics) {
+  nlohmann::ordered_json json;
+  json["ate_rmse_m"] = metrics.ate_rmse_m;
+  json["ate_mean_m"] = metrics.ate_mean_m;
+  json["ate_max_m"] = metrics.ate_max_m;
+  json["rpe_trans_mean_m"] = metrics.rpe_trans_mean_m;
+  json["rpe_trans_rmse_m"] = metrics.rpe_trans_rmse_m;
+  json["rpe_rot_mean_deg"] = metrics.rpe_rot_mean_deg;
+  json["associated_poses"] = metrics.associated_poses;
+  json["rpe_pairs"] = metrics.rpe_pairs;
+  return json.dump(2);
 }
 
 }  // namespace littermap::eval

@@ -58,4 +58,8 @@ TrajectoryMetrics EvaluateTrajectory(const std::vector<StampedPose>& estimate,
                                      const std::vector<StampedPose>& reference,
                                      const TrajectoryMetricsOptions& options);
 
+// The metrics as a JSON object (2-space indent): ate_rmse_m, ate_mean_m, ate_max_m,
+// rpe_trans_mean_m, rpe_trans_rmse_m, rpe_rot_mean_deg, associated_poses, rpe_pairs.
+std::string ToJson(const TrajectoryMetrics& metrics);
+
 }  // namespace littermap::eval
