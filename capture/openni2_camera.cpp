@@ -9,6 +9,7 @@
 #include <deque>
 #include <mutex>
 #include <numbers>
+#include <regex>
 
 #include <opencv2/imgproc.hpp>
 
@@ -300,5 +301,19 @@ std::optional<SensorSample> Openni2Camera::Read(double timeout_s) {
 void Openni2Camera::Disconnect() { device_.reset(); }
 
 std::vector<std::string> Openni2Camera::TakeNotes() { return std::exchange(notes_, {}); }
+
+Openni2CameraOptions ParseCameraMode(const std::string& text) {
+  static const std::regex kMode(R"((\d{2,5})x(\d{2,5})@(\d{1,3}))");
+  std::smatch match;
+  if (!std::regex_match(text, match, kMode)) {
+    throw UsageError("--camera-mode '" + text + "': expected WIDTHxHEIGHT@FPS, e.g. 640x480@30");
+  }
+  Openni2CameraOptions options;
+  options.width = std::stoi(match[1]);
+  options.height = std::stoi(match[2]);
+  options.fps = std::stoi(match[3]);
+  options.Validate();
+  return options;
+}
 
 }  // namespace littermap::capture

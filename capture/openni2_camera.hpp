@@ -29,6 +29,10 @@ struct Openni2CameraOptions {
   void Validate() const;
 };
 
+// "WIDTHxHEIGHT@FPS" (e.g. 640x480@30) as camera options. Throws UsageError naming
+// --camera-mode for other text or a mode out of range.
+Openni2CameraOptions ParseCameraMode(const std::string& text);
+
 class Openni2Camera : public SensorSource {
  public:
   // uri: "openni2" or "openni2:DEVICE_URI".

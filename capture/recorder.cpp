@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <condition_variable>
+#include <cstdio>
 #include <deque>
 #include <mutex>
 #include <thread>
@@ -467,6 +468,43 @@ RecordingResult Record(const std::filesystem::path& bag_path,
     writer.Close();
   }
   return result;
+}
+
+std::string FormatStatus(const RecorderStatus& status) {
+  std::string line;
+  char text[160];
+  std::snprintf(text, sizeof text, "recording %4.0f s", status.elapsed_s);
+  line += text;
+  for (const SourceStatus& source : status.sources) {
+    if (source.connected) {
+      std::snprintf(text, sizeof text, " | %s %.1f Hz", source.name.c_str(), source.rate_hz);
+    } else {
+      std::snprintf(text, sizeof text, " | %s LOST", source.name.c_str());
+    }
+    line += text;
+    if (source.dropped > 0) line += " " + std::to_string(source.dropped) + " dropped";
+    if (source.queue_depth > 1) line += " q" + std::to_string(source.queue_depth);
+  }
+  std::snprintf(text, sizeof text, " | bag %.0f MB, disk %.1f GB free",
+                static_cast<double>(status.bag_bytes) / 1e6,
+                static_cast<double>(status.disk_free_bytes) / 1e9);
+  return line + text;
+}
+
+std::string FormatSummary(const SourceStatus& source) {
+  char counts[320];
+  std::snprintf(counts, sizeof counts,
+                ": %llu received, %llu written, %llu dropped, %llu malformed, %llu disconnects, "
+                "%.1f s without data, queue max %zu",
+                static_cast<unsigned long long>(source.received),
+                static_cast<unsigned long long>(source.written),
+                static_cast<unsigned long long>(source.dropped),
+                static_cast<unsigned long long>(source.malformed),
+                static_cast<unsigned long long>(source.disconnects), source.gap_s,
+                source.max_queue_depth);
+  char name[64];
+  std::snprintf(name, sizeof name, "%-8s ", source.name.c_str());
+  return name + source.uri + counts;
 }
 
 }  // namespace littermap::capture

@@ -70,6 +70,12 @@ struct RecorderStatus {
   std::vector<std::string> new_events;  // written to /capture/events since the last status
 };
 
+// One status line for people: elapsed time, each source's rate (or LOST), drops and queue, the
+// bag's size and the disk's free space.
+std::string FormatStatus(const RecorderStatus& status);
+// A source's counts at the end of a recording, on one line for people.
+std::string FormatSummary(const SourceStatus& source);
+
 enum class RecordingStop { kRequested, kDuration, kDiskFull, kWriteFailed };
 
 struct RecordingResult {

@@ -5,14 +5,10 @@
 // SCIP 2.0 laser and the base's wheel odometry, each optional; or from the park simulator when
 // the sources are sim:WORLD.yaml. SIGINT and SIGTERM finish the bag; a second one kills.
 
-#include <signal.h>
-
-#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <optional>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -23,6 +19,7 @@
 #include "capture/robot_description.hpp"
 #include "capture/scip_laser_source.hpp"
 #include "cli/simulate_run.hpp"
+#include "cli/stop_on_signals.hpp"
 #include "core/error.hpp"
 
 namespace littermap::cli {
@@ -37,35 +34,6 @@ struct CaptureArguments {
   double min_free_disk_mb = 256;
   bool list_cameras = false;
   SimulateRequest simulate;
-};
-
-std::atomic<bool> g_stop_requested{false};
-
-extern "C" void RequestStop(int) { g_stop_requested.store(true); }
-
-// SIGINT/SIGTERM set the stop flag while alive; the first one resets the handler, so a second
-// signal ends a recorder that does not stop.
-class StopOnSignals {
- public:
-  StopOnSignals() {
-    g_stop_requested.store(false);
-    struct sigaction action {};
-    action.sa_handler = RequestStop;
-    action.sa_flags = SA_RESETHAND;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &old_int_);
-    sigaction(SIGTERM, &action, &old_term_);
-  }
-  ~StopOnSignals() {
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
-  }
-  StopOnSignals(const StopOnSignals&) = delete;
-  StopOnSignals& operator=(const StopOnSignals&) = delete;
-
- private:
-  struct sigaction old_int_ {};
-  struct sigaction old_term_ {};
 };
 
 bool IsSim(const std::string& uri) { return uri.starts_with(kSimScheme); }
@@ -94,43 +62,9 @@ void RunSimulatedCapture(CaptureArguments& arguments, CliContext& context) {
   RunSimulate(arguments.simulate, context);
 }
 
-capture::Openni2CameraOptions ParseCameraMode(const std::string& text) {
-  static const std::regex kMode(R"((\d{2,5})x(\d{2,5})@(\d{1,3}))");
-  std::smatch match;
-  if (!std::regex_match(text, match, kMode)) {
-    throw UsageError("--camera-mode '" + text + "': expected WIDTHxHEIGHT@FPS, e.g. 640x480@30");
-  }
-  capture::Openni2CameraOptions options;
-  options.width = std::stoi(match[1]);
-  options.height = std::stoi(match[2]);
-  options.fps = std::stoi(match[3]);
-  options.Validate();
-  return options;
-}
-
-std::string FormatStatus(const capture::RecorderStatus& status) {
-  std::string line;
-  char text[160];
-  std::snprintf(text, sizeof text, "recording %4.0f s", status.elapsed_s);
-  line += text;
-  for (const capture::SourceStatus& source : status.sources) {
-    if (source.connected) {
-      std::snprintf(text, sizeof text, " | %s %.1f Hz", source.name.c_str(), source.rate_hz);
-    } else {
-      std::snprintf(text, sizeof text, " | %s LOST", source.name.c_str());
-    }
-    line += text;
-    if (source.dropped > 0) line += " " + std::to_string(source.dropped) + " dropped";
-    if (source.queue_depth > 1) line += " q" + std::to_string(source.queue_depth);
-  }
-  std::snprintf(text, sizeof text, " | bag %.0f MB, disk %.1f GB free",
-                static_cast<double>(status.bag_bytes) / 1e6,
-                static_cast<double>(status.disk_free_bytes) / 1e9);
-  return line + text;
-}
-
 void RunRealCapture(const CaptureArguments& arguments, CliContext& context) {
-  const capture::Openni2CameraOptions camera_options = ParseCameraMode(arguments.camera_mode);
+  const capture::Openni2CameraOptions camera_options =
+      capture::ParseCameraMode(arguments.camera_mode);
   std::vector<std::unique_ptr<capture::SensorSource>> sources;
   if (!IsNone(arguments.camera)) {
     sources.push_back(std::make_unique<capture::Openni2Camera>(arguments.camera, camera_options));
@@ -164,9 +98,9 @@ void RunRealCapture(const CaptureArguments& arguments, CliContext& context) {
   StopOnSignals signals;
   const capture::RecordingResult result =
       capture::Record(arguments.simulate.bag, std::move(sources), tf_static, options,
-                      g_stop_requested, [&context](const capture::RecorderStatus& status) {
+                      signals.stop_requested(), [&context](const capture::RecorderStatus& status) {
                         for (const std::string& event : status.new_events) context.Warn(event);
-                        context.Status(FormatStatus(status));
+                        context.Status(capture::FormatStatus(status));
                       });
   context.FinishProgress();
 
@@ -174,14 +108,7 @@ void RunRealCapture(const CaptureArguments& arguments, CliContext& context) {
               result.stop_reason.c_str(), result.duration_s,
               static_cast<unsigned long long>(result.messages));
   for (const capture::SourceStatus& source : result.sources) {
-    std::printf(
-        "  %-8s %s: %llu received, %llu written, %llu dropped, %llu malformed, %llu "
-        "disconnects, %.1f s without data, queue max %zu\n",
-        source.name.c_str(), source.uri.c_str(), static_cast<unsigned long long>(source.received),
-        static_cast<unsigned long long>(source.written),
-        static_cast<unsigned long long>(source.dropped),
-        static_cast<unsigned long long>(source.malformed),
-        static_cast<unsigned long long>(source.disconnects), source.gap_s, source.max_queue_depth);
+    std::printf("  %s\n", capture::FormatSummary(source).c_str());
   }
   if (result.stop == capture::RecordingStop::kWriteFailed) {
     throw InternalError(arguments.simulate.bag + ": " + result.stop_reason +

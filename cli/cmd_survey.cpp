@@ -24,10 +24,11 @@
 #include "cli/run_stages.hpp"
 #include "core/error.hpp"
 #include "db/site_database.hpp"
-#include "reports/class_palette.hpp"
 #include "reports/report_files.hpp"
+#include "reports/survey_summary.hpp"
 #include "run/run_digest.hpp"
 #include "run/run_files.hpp"
+#include "run/stage_marker.hpp"
 
 namespace littermap::cli {
 namespace {
@@ -46,30 +47,9 @@ struct SurveyArguments {
 
 struct Stage {
   std::string name;
-  std::vector<fs::path> inputs;
-  std::vector<fs::path> outputs;  // empty: the stage always runs
+  run::StageFiles files;
   std::function<void()> run;
 };
-
-std::vector<fs::path> FilesIn(const fs::path& dir) {
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(dir)) {
-    if (entry.is_regular_file()) files.push_back(entry.path());
-  }
-  return files;
-}
-
-// Finished before, every output there, none of the inputs changed since.
-bool UpToDate(const Stage& stage, const fs::path& marker) {
-  if (stage.outputs.empty() || !fs::exists(marker)) return false;
-  const auto finished = fs::last_write_time(marker);
-  for (const fs::path& output : stage.outputs) {
-    if (!fs::exists(output) || fs::last_write_time(output) > finished) return false;
-  }
-  return std::all_of(stage.inputs.begin(), stage.inputs.end(), [&](const fs::path& input) {
-    return fs::exists(input) && fs::last_write_time(input) <= finished;
-  });
-}
 
 db::SiteDatabase OpenOrCreateSite(const SurveyArguments& arguments) {
   if (fs::exists(arguments.site)) return db::SiteDatabase::Open(arguments.site);
@@ -99,38 +79,6 @@ void CheckNotIngestedDifferently(const SurveyArguments& arguments, const fs::pat
   }
 }
 
-void PrintSummary(const reports::SiteReport& report, const std::string& name,
-                  const fs::path& report_dir) {
-  const auto run = std::find_if(report.runs.begin(), report.runs.end(),
-                                [&](const reports::RunFigures& r) { return r.name == name; });
-  std::printf("\nSurvey '%s' done.\n", name.c_str());
-  if (run != report.runs.end()) {
-    std::printf("  driven %.0f m, ground surveyed %.0f m2 (%.0f %% of the site's)\n", run->length_m,
-                run->observed_area_m2, 100 * run->coverage_fraction);
-    std::string classes;
-    for (const auto& [class_name, count] : run->items_by_class) {
-      classes += (classes.empty() ? "" : ", ") + std::to_string(count) + " " +
-                 reports::StyleOf(class_name).label;
-    }
-    std::printf("  litter found: %zu items%s%s%s\n", run->items_found, classes.empty() ? "" : " (",
-                classes.c_str(), classes.empty() ? "" : ")");
-    std::printf("  %zu new, %zu still there from earlier runs, %zu gone since\n", run->new_items,
-                run->items_still_there, run->items_gone);
-    for (const std::string& warning : run->warnings) std::printf("  note: %s\n", warning.c_str());
-  }
-  std::printf("  site '%s': %zu %s, %zu litter items\n", report.site_name.c_str(),
-              report.runs.size(), report.runs.size() == 1 ? "run" : "runs", report.items);
-  for (std::size_t i = 0; i < std::min<std::size_t>(3, report.hotspots.size()); ++i) {
-    const reports::HotspotFigures& h = report.hotspots[i];
-    std::printf(
-        "  hotspot %d: %.1f m east, %.1f m north of the dock, %.1f items per 100 m2, "
-        "mostly %s\n",
-        h.rank, h.site_xy.x, h.site_xy.y, h.density_per_100m2,
-        reports::StyleOf(h.dominant_class).label.c_str());
-  }
-  std::printf("Report: %s\n", (report_dir / "index.html").c_str());
-}
-
 void RunSurvey(const SurveyArguments& arguments, CliContext& context) {
   const fs::path bag = arguments.bag;
   if (!fs::is_directory(bag)) throw UsageError(arguments.bag + ": not a run bag directory");
@@ -144,7 +92,7 @@ void RunSurvey(const SurveyArguments& arguments, CliContext& context) {
   fs::create_directories(stages_dir);
   OpenOrCreateSite(arguments);  // before any long stage: a bad site fails fast
 
-  const std::vector<fs::path> bag_files = FilesIn(bag);
+  const std::vector<fs::path> bag_files = run::FilesIn(bag);
   const std::string model = arguments.model.empty() ? LITTERMAP_DEFAULT_MODEL : arguments.model;
   const run::RunFiles files(run_dir);
   std::vector<fs::path> detect_inputs = bag_files;
@@ -156,23 +104,19 @@ void RunSurvey(const SurveyArguments& arguments, CliContext& context) {
   reports::SiteReport report;
   const std::vector<Stage> stages = {
       {"reconstruct",
-       bag_files,
-       {files.trajectory(), files.map_yaml(), files.map_pgm(), files.quality()},
+       {bag_files, {files.trajectory(), files.map_yaml(), files.map_pgm(), files.quality()}},
        [&] { ReconstructStage(bag, run_dir, {}, context); }},
       {"detect",
-       detect_inputs,
-       {files.items(), files.detections()},
+       {detect_inputs, {files.items(), files.detections()}},
        [&] { DetectStage(bag, run_dir, detect, context); }},
       {"ingest",
-       {},
        {},
        [&] {
          CheckNotIngestedDifferently(arguments, run_dir, name);
          IngestStage(arguments.site, run_dir, name, context);
        }},
-      {"heatmap", {}, {}, [&] { HeatmapStage(arguments.site, maps_dir, context); }},
+      {"heatmap", {}, [&] { HeatmapStage(arguments.site, maps_dir, context); }},
       {"report",
-       {},
        {},
        [&] {
          db::SiteDatabase site = db::SiteDatabase::Open(arguments.site);
@@ -186,7 +130,7 @@ void RunSurvey(const SurveyArguments& arguments, CliContext& context) {
     const std::string label =
         "[" + std::to_string(i + 1) + "/" + std::to_string(stages.size()) + " " + stage.name + "]";
     const fs::path marker = stages_dir / (stage.name + ".done");
-    if (!arguments.force && UpToDate(stage, marker)) {
+    if (!arguments.force && run::StageUpToDate(stage.files, marker)) {
       std::printf("%s up to date (outputs newer than inputs), skipped; --force redoes it\n",
                   label.c_str());
       continue;
@@ -209,7 +153,7 @@ void RunSurvey(const SurveyArguments& arguments, CliContext& context) {
     context.task_prefix.clear();
     std::ofstream(marker) << stage.name << " finished\n";
   }
-  PrintSummary(report, name, report_dir);
+  std::printf("%s", reports::SurveySummary(report, name, report_dir / "index.html").c_str());
 }
 
 }  // namespace

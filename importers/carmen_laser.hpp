@@ -7,7 +7,7 @@
 // beams lie at ±90° (spacing 180°/(n-1)), with an even count (180, 360) the spacing is 180°/n
 // and the last beam lies one step short of +90°. This is CARMEN's own carmen_laser_get_fov()
 // rule, and it is the convention that draws the sharpest maps from the reference poses of every
-// Radish log in shared/datasets/carmen (tests/capture/carmen_beam_angle_test.cpp checks it).
+// Radish log in shared/datasets/carmen (tests/importers/carmen_beam_angle_test.cpp checks it).
 // ROBOTLASER1 records carry their angles and maximum range.
 //
 // "No return": the sensor reports its maximum (81.91 m, 81.83 m, 51.15 m, 50 m, 32.767 m in the
