@@ -15,6 +15,7 @@
 #include "cli/cli_context.hpp"
 #include "eval/detection_metrics.hpp"
 #include "eval/trajectory_metrics.hpp"
+#include "run/items_file.hpp"
 
 namespace littermap::cli {
 namespace {
@@ -28,6 +29,20 @@ struct DetectionArguments {
   bool json = false;
   eval::DetectionMetricsOptions options;
 };
+
+// A run's items.csv as the metrics take them: without a litter column an item is litter unless
+// its class is a natural one.
+std::vector<eval::DetectedItem> ReadItems(const std::string& file) {
+  std::vector<eval::DetectedItem> items;
+  for (const run::ItemRow& row : run::ReadItemsCsv(file)) {
+    items.push_back({row.id,
+                     row.class_name,
+                     {row.x_m, row.y_m},
+                     row.confidence,
+                     row.litter.value_or(!IsNaturalClass(row.class_name))});
+  }
+  return items;
+}
 
 // Items of a run placed in its own map frame, carried into the truth's frame by the rigid
 // alignment of the run's trajectory onto the reference (the one ATE uses).
@@ -71,8 +86,7 @@ void RunDetections(const DetectionArguments& arguments) {
   std::optional<eval::VisiblePixels> visible;
   if (!arguments.visible.empty()) visible = eval::ReadVisiblePixels(arguments.visible);
   const eval::DetectionMetrics metrics = eval::EvaluateDetections(
-      AlignItems(eval::ReadDetectedItems(arguments.items), arguments.align), truth,
-      arguments.options, visible);
+      AlignItems(ReadItems(arguments.items), arguments.align), truth, arguments.options, visible);
   if (arguments.json) {
     std::printf("%s\n", eval::ToJson(metrics, arguments.options).c_str());
     return;

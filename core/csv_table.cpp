@@ -30,6 +30,16 @@ const std::string& CsvRow::Text(const std::string& name) const {
   return fields_[column->second];
 }
 
+const std::string& CsvRow::NonEmptyText(const std::string& name) const {
+  const std::string& text = Text(name);
+  if (text.empty()) Fail(name, "is empty");
+  return text;
+}
+
+void CsvRow::Fail(const std::string& name, const std::string& what) const {
+  throw BadInputError(where_ + ": column '" + name + "' " + what);
+}
+
 double CsvRow::Number(const std::string& name) const {
   const std::string& text = Text(name);
   double value = 0.0;

@@ -23,6 +23,10 @@ class CsvRow {
   // Throws BadInputError "FILE:LINE: column 'name' ..." when absent or not a finite number.
   const std::string& Text(const std::string& name) const;
   double Number(const std::string& name) const;
+  // Text that must not be empty ("... column 'name' is empty").
+  const std::string& NonEmptyText(const std::string& name) const;
+  // Throws BadInputError "FILE:LINE: column 'name' <what>".
+  [[noreturn]] void Fail(const std::string& name, const std::string& what) const;
   const std::string& where() const { return where_; }
 
  private:

@@ -20,22 +20,12 @@ namespace {
 
 constexpr std::size_t kUnmatched = std::numeric_limits<std::size_t>::max();
 
-[[noreturn]] void Fail(const CsvRow& row, const std::string& column, const std::string& what) {
-  throw BadInputError(row.where() + ": column '" + column + "' " + what);
-}
-
-const std::string& NonEmpty(const CsvRow& row, const std::string& column) {
-  const std::string& text = row.Text(column);
-  if (text.empty()) Fail(row, column, "is empty");
-  return text;
-}
-
 std::size_t Count(const CsvRow& row, const std::string& column) {
   const std::string& text = row.Text(column);
   std::size_t value = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (error != std::errc() || end != text.data() + text.size()) {
-    Fail(row, column, "is not a non-negative integer: '" + text + "'");
+    row.Fail(column, "is not a non-negative integer: '" + text + "'");
   }
   return value;
 }
@@ -245,36 +235,13 @@ DetectionMetrics EvaluateDetections(const std::vector<DetectedItem>& detected,
   return metrics;
 }
 
-std::vector<DetectedItem> ReadDetectedItems(const std::filesystem::path& file) {
-  std::vector<DetectedItem> items;
-  ReadCsv(file, {"id", "class", "x", "y"}, [&](const CsvRow& row) {
-    DetectedItem item;
-    item.id = NonEmpty(row, "id");
-    item.class_name = NonEmpty(row, "class");
-    item.position_m = {row.Number("x"), row.Number("y")};
-    if (row.Has("confidence")) {
-      item.confidence = row.Number("confidence");
-      if (item.confidence < 0 || item.confidence > 1) {
-        Fail(row, "confidence", "is not in [0, 1]: '" + row.Text("confidence") + "'");
-      }
-    }
-    if (row.Has("litter")) {
-      const std::string& flag = row.Text("litter");
-      if (flag != "0" && flag != "1") Fail(row, "litter", "is not 0 or 1: '" + flag + "'");
-      item.litter = flag == "1";
-    } else {
-      item.litter = !IsNaturalClass(item.class_name);
-    }
-    items.push_back(std::move(item));
-  });
-  return items;
-}
-
 std::vector<TruthObject> ReadTruthObjects(const std::filesystem::path& file, bool litter) {
   std::vector<TruthObject> objects;
   ReadCsv(file, {"id", "class", "x", "y"}, [&](const CsvRow& row) {
-    objects.push_back(
-        {NonEmpty(row, "id"), NonEmpty(row, "class"), {row.Number("x"), row.Number("y")}, litter});
+    objects.push_back({row.NonEmptyText("id"),
+                       row.NonEmptyText("class"),
+                       {row.Number("x"), row.Number("y")},
+                       litter});
   });
   return objects;
 }
@@ -291,7 +258,7 @@ VisiblePixels ReadVisiblePixels(const std::filesystem::path& file) {
   ReadCsv(file, {"object_id", "pixels"}, [&](const CsvRow& row) {
     // Pixels with a depth reading when the file says (an RGB-D detector can place only those).
     const std::size_t pixels = Count(row, row.Has("depth_pixels") ? "depth_pixels" : "pixels");
-    std::size_t& largest = visible[NonEmpty(row, "object_id")];
+    std::size_t& largest = visible[row.NonEmptyText("object_id")];
     largest = std::max(largest, pixels);
   });
   return visible;

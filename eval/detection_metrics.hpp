@@ -114,9 +114,6 @@ std::vector<DetectedItem> TransformItems(std::vector<DetectedItem> items,
 
 // Readers (core/csv_table.hpp). Columns are found by header name, in any order; extra columns
 // are ignored. Errors throw BadInputError naming FILE:LINE and the column (LINE 1: the header).
-// Items: id, class, x, y required; confidence (0..1) and litter (0/1) optional. Without a
-// litter column an item is litter unless IsNaturalClass(class).
-std::vector<DetectedItem> ReadDetectedItems(const std::filesystem::path& file);
 // litter.csv or natural.csv (id, class, x, y required); `litter` says which the file holds.
 std::vector<TruthObject> ReadTruthObjects(const std::filesystem::path& file, bool litter);
 // A simulator TRUTH_DIR's litter.csv and natural.csv together.

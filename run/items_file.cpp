@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "core/csv_table.hpp"
 #include "core/error.hpp"
 
 namespace littermap::run {
@@ -37,6 +38,35 @@ ItemsWritten WriteItemsCsv(const std::filesystem::path& file,
   }
   if (!out.flush()) throw InternalError(file.string() + ": write failed");
   return written;
+}
+
+std::vector<ItemRow> ReadItemsCsv(const std::filesystem::path& file,
+                                  const std::vector<std::string>& required_columns) {
+  std::vector<std::string> required = {"id", "class", "x", "y"};
+  required.insert(required.end(), required_columns.begin(), required_columns.end());
+  std::vector<ItemRow> items;
+  ReadCsv(file, required, [&](const CsvRow& row) {
+    ItemRow item;
+    item.id = row.NonEmptyText("id");
+    item.class_name = row.NonEmptyText("class");
+    item.x_m = row.Number("x");
+    item.y_m = row.Number("y");
+    if (row.Has("z")) item.z_m = row.Number("z");
+    if (row.Has("size_m")) item.size_m = row.Number("size_m");
+    if (row.Has("confidence")) {
+      item.confidence = row.Number("confidence");
+      if (item.confidence < 0 || item.confidence > 1) {
+        row.Fail("confidence", "is not in [0, 1]: '" + row.Text("confidence") + "'");
+      }
+    }
+    if (row.Has("litter")) {
+      const std::string& flag = row.Text("litter");
+      if (flag != "0" && flag != "1") row.Fail("litter", "is not 0 or 1: '" + flag + "'");
+      item.litter = flag == "1";
+    }
+    items.push_back(std::move(item));
+  });
+  return items;
 }
 
 }  // namespace littermap::run

@@ -1,22 +1,20 @@
 #include "site/run_items.hpp"
 
-#include "core/csv_table.hpp"
+#include "run/items_file.hpp"
 
 namespace littermap::site {
 
 std::vector<RunItem> ReadRunItems(const std::filesystem::path& file) {
   std::vector<RunItem> items;
-  ReadCsv(file, {"id", "class", "x", "y", "z", "size_m"}, [&](const CsvRow& row) {
-    if (row.Has("litter") && row.Number("litter") == 0) return;  // detect's natural objects
-    RunItem item;
-    item.id = row.Text("id");
-    item.class_name = row.Text("class");
-    item.xy = {row.Number("x"), row.Number("y")};
-    item.z_m = row.Number("z");
-    item.size_m = row.Number("size_m");
-    if (row.Has("confidence")) item.confidence = row.Number("confidence");
-    items.push_back(std::move(item));
-  });
+  for (run::ItemRow& row : run::ReadItemsCsv(file, {"z", "size_m"})) {
+    if (row.litter == false) continue;  // detect's natural objects
+    items.push_back({std::move(row.id),
+                     std::move(row.class_name),
+                     {row.x_m, row.y_m},
+                     row.z_m,
+                     row.size_m,
+                     row.confidence});
+  }
   return items;
 }
 

@@ -239,24 +239,6 @@ TEST(DetectionMetrics, InvalidRadiusIsAUsageError) {
 
 TEST(DetectionMetricsFiles, ReadersFindColumnsByName) {
   testing::TempDir dir;
-  WriteFile(dir / "items.csv",
-            "y,class,extra,id,x,confidence\n1.5,can,?,a,2.5,0.9\n\n# comment\n2,leaf,,b,3,1\n");
-  const auto items = ReadDetectedItems(dir / "items.csv");
-  ASSERT_EQ(items.size(), 2u);
-  EXPECT_EQ(items[0].id, "a");
-  EXPECT_EQ(items[0].class_name, "can");
-  EXPECT_DOUBLE_EQ(items[0].position_m.x(), 2.5);
-  EXPECT_DOUBLE_EQ(items[0].position_m.y(), 1.5);
-  EXPECT_DOUBLE_EQ(items[0].confidence, 0.9);
-  EXPECT_TRUE(items[0].litter);
-  EXPECT_FALSE(items[1].litter);  // no litter column: a leaf is natural
-
-  WriteFile(dir / "flagged.csv", "id,class,x,y,litter\na,leaf,0,0,1\nb,can,0,0,0\n");
-  const auto flagged = ReadDetectedItems(dir / "flagged.csv");
-  ASSERT_EQ(flagged.size(), 2u);
-  EXPECT_TRUE(flagged[0].litter);  // the column wins over the class
-  EXPECT_FALSE(flagged[1].litter);
-
   WriteFile(dir / "litter.csv", "id,class,x,y,z,size_m\r\n7,can,1.0,2.0,0.05,0.12\r\n");
   const auto truth = ReadTruthObjects(dir / "litter.csv", true);
   ASSERT_EQ(truth.size(), 1u);
@@ -282,17 +264,6 @@ void ExpectBadInput(const std::function<void()>& read, const std::string& expect
 
 TEST(DetectionMetricsFiles, ErrorsNameFileLineAndColumn) {
   testing::TempDir dir;
-  const std::string items = (dir / "items.csv").string();
-  WriteFile(items, "id,class,x\n1,can,0\n");
-  ExpectBadInput([&] { ReadDetectedItems(items); }, items + ":1: the header has no column 'y'");
-  WriteFile(items, "id,class,x,y\n1,can,0,0\n2,can,abc,0\n");
-  ExpectBadInput([&] { ReadDetectedItems(items); }, items + ":3: column 'x' is not a number");
-  WriteFile(items, "id,class,x,y\n1,can,0\n");
-  ExpectBadInput([&] { ReadDetectedItems(items); }, items + ":2: column 'y' is missing");
-  WriteFile(items, "id,class,x,y,confidence\n1,can,0,0,1.5\n");
-  ExpectBadInput([&] { ReadDetectedItems(items); }, items + ":2: column 'confidence'");
-  WriteFile(items, "id,class,x,y,litter\n1,can,0,0,yes\n");
-  ExpectBadInput([&] { ReadDetectedItems(items); }, items + ":2: column 'litter'");
   const std::string visible = (dir / "visible.csv").string();
   WriteFile(visible, "frame,object_id,pixels\n0,3,-4\n");
   ExpectBadInput([&] { ReadVisiblePixels(visible); }, visible + ":2: column 'pixels'");
