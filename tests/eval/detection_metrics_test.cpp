@@ -15,10 +15,13 @@
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
+#include "support/expect_bad_input.hpp"
 #include "support/temp_dir.hpp"
 
 namespace littermap::eval {
 namespace {
+
+using testing::ExpectBadInput;
 
 constexpr double kTolerance = 1e-12;
 
@@ -251,15 +254,6 @@ TEST(DetectionMetricsFiles, ReadersFindColumnsByName) {
   const VisiblePixels visible = ReadVisiblePixels(dir / "visible.csv");
   EXPECT_EQ(visible.at("7"), 300u);
   EXPECT_EQ(visible.at("9"), 5u);
-}
-
-void ExpectBadInput(const std::function<void()>& read, const std::string& expected) {
-  try {
-    read();
-    ADD_FAILURE() << "no error, expected " << expected;
-  } catch (const BadInputError& e) {
-    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
-  }
 }
 
 TEST(DetectionMetricsFiles, ErrorsNameFileLineAndColumn) {

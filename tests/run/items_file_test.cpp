@@ -7,22 +7,16 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "support/expect_bad_input.hpp"
 #include "support/temp_dir.hpp"
 
 namespace littermap::run {
 namespace {
 
+using testing::ExpectBadInput;
+
 void WriteFile(const std::filesystem::path& file, const std::string& text) {
   std::ofstream(file) << text;
-}
-
-void ExpectBadInput(const std::function<void()>& read, const std::string& expected) {
-  try {
-    read();
-    ADD_FAILURE() << "no error, expected " << expected;
-  } catch (const BadInputError& e) {
-    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
-  }
 }
 
 TEST(ItemsFile, ReadsColumnsByName) {
