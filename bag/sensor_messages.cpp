@@ -24,6 +24,12 @@ msg::TransformStamped TransformFromBase(TimestampNs stamp_ns, const std::string&
   return transform;
 }
 
+msg::TFMessage StaticTransforms(TimestampNs stamp_ns, const Eigen::Isometry3d& T_base_laser,
+                                const Eigen::Isometry3d& T_base_optical) {
+  return msg::TFMessage{{TransformFromBase(stamp_ns, frames::kLaser, T_base_laser),
+                         TransformFromBase(stamp_ns, frames::kCamera, T_base_optical)}};
+}
+
 msg::Odometry Odometry(TimestampNs stamp_ns, const PlanarPose& T_odom_base, double linear_mps,
                        double angular_radps) {
   msg::Odometry odometry;

@@ -17,6 +17,9 @@ namespace littermap::bag::sensor_messages {
 // base_link -> child, stamped stamp_ns.
 msg::TransformStamped TransformFromBase(TimestampNs stamp_ns, const std::string& child,
                                         const Eigen::Isometry3d& T_base_child);
+// /tf_static of a run: base_link -> laser and base_link -> camera_color_optical_frame.
+msg::TFMessage StaticTransforms(TimestampNs stamp_ns, const Eigen::Isometry3d& T_base_laser,
+                                const Eigen::Isometry3d& T_base_optical);
 
 // Wheel odometry: the pose in odom, the forward and turn rates in base_link.
 msg::Odometry Odometry(TimestampNs stamp_ns, const PlanarPose& T_odom_base, double linear_mps,

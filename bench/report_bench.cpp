@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "bench/lawn_mower.hpp"
-#include "site/run_ingest.hpp"
 #include "reports/report_files.hpp"
+#include "site/run_ingest.hpp"
 
 namespace {
 

@@ -41,9 +41,7 @@ RobotDescription ReadRobotDescription(const std::filesystem::path& path) {
 }
 
 msg::TFMessage StaticTransforms(TimestampNs stamp_ns, const RobotDescription& robot) {
-  return msg::TFMessage{
-      {bag::sensor_messages::TransformFromBase(stamp_ns, frames::kLaser, robot.T_base_laser),
-       bag::sensor_messages::TransformFromBase(stamp_ns, frames::kCamera, robot.T_base_optical)}};
+  return bag::sensor_messages::StaticTransforms(stamp_ns, robot.T_base_laser, robot.T_base_optical);
 }
 
 }  // namespace littermap::capture

@@ -72,7 +72,7 @@ void RunRelations(const RelationsArguments& arguments, CliContext& context) {
   const std::vector<double> stamps = ScanStamps(arguments, context);
   std::vector<PlanarPose> trajectory;
   for (const StampedPose& pose : bag::ReadTumTrajectory(arguments.trajectory)) {
-    trajectory.push_back({pose.position_m.x(), pose.position_m.y(), YawOf(pose.orientation)});
+    trajectory.push_back(PlanarPoseOf(pose));
   }
   eval::PoseRelationMetrics metrics;
   try {

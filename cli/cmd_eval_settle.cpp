@@ -33,12 +33,6 @@ struct SettleArguments {
   reconstruct::ScanSettlingOptions options;
 };
 
-std::vector<StampedPose> ToTum(const std::vector<std::pair<TimestampNs, PlanarPose>>& poses) {
-  std::vector<StampedPose> tum;
-  for (const auto& [stamp_ns, pose] : poses) tum.push_back(StampedPoseFromPlanar(stamp_ns, pose));
-  return tum;
-}
-
 // The scans of the bag placed with the trajectory's poses and aligned; warnings for what was
 // left out.
 reconstruct::ScanSettling Settle(const SettleArguments& arguments, CliContext& context) {
@@ -84,9 +78,9 @@ void RunSettle(const SettleArguments& arguments, CliContext& context) {
     throw UsageError(arguments.output + ": its directory does not exist");
   }
   const reconstruct::ScanSettling settling = Settle(arguments, context);
-  const std::vector<StampedPose> settled = ToTum(settling.settled);
+  const std::vector<StampedPose> settled = StampedPosesFromPlanar(settling.settled);
   const eval::TrajectoryMetrics moved =
-      eval::EvaluateTrajectory(ToTum(settling.given), settled, {});
+      eval::EvaluateTrajectory(StampedPosesFromPlanar(settling.given), settled, {});
   if (!output.empty()) bag::WriteTumTrajectory(output, settled);
   if (arguments.json) {
     nlohmann::ordered_json json;

@@ -56,7 +56,7 @@ std::optional<PlanarPose> PlanarPoseNearest(const std::vector<StampedPose>& sort
     }
   }
   if (best == nullptr || best_s > max_time_difference_s) return std::nullopt;
-  return PlanarPose{best->position_m.x(), best->position_m.y(), YawOf(best->orientation)};
+  return PlanarPoseOf(*best);
 }
 
 }  // namespace

@@ -21,7 +21,8 @@ void ParseOneLine(std::string_view line) {
     if (const auto* laser = std::get_if<littermap::importers::CarmenLaserRecord>(&record)) {
       if (laser->ranges_m.empty()) __builtin_trap();  // the parser promises at least one beam
       const std::span<const littermap::importers::CarmenLaserRecord> scans(laser, 1);
-      const littermap::importers::CarmenRangeLimits limits = littermap::importers::CarmenRanges(scans);
+      const littermap::importers::CarmenRangeLimits limits =
+          littermap::importers::CarmenRanges(scans);
       const auto scan = littermap::importers::ToLaserScan(*laser, {}, limits);
       if (scan.ranges.size() != laser->ranges_m.size()) __builtin_trap();
     }

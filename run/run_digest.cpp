@@ -10,7 +10,8 @@
 namespace littermap::run {
 
 RunDirectoryFiles FindRunDirectoryFiles(const std::filesystem::path& run_dir) {
-  RunDirectoryFiles files{RunFiles(run_dir).trajectory(), RunFiles(run_dir).items(), false};
+  const RunFiles run(run_dir);
+  RunDirectoryFiles files{run.trajectory(), run.items(), false};
   if (!std::filesystem::exists(files.items) && std::filesystem::exists(run_dir / "litter.csv")) {
     files.items = run_dir / "litter.csv";
     files.simulator_truth = true;

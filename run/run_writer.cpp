@@ -21,10 +21,6 @@ void CreateRunDirectory(const std::filesystem::path& run_dir) {
   if (error) throw UsageError(run_dir.string() + ": cannot create: " + error.message());
 }
 
-StampedPose ToTum(TimestampNs stamp_ns, const Eigen::Isometry3d& T) {
-  return {stamp_ns, T.translation(), Eigen::Quaterniond(T.linear())};
-}
-
 void WriteText(const std::filesystem::path& path, const std::string& text) {
   std::ofstream out(path);
   if (!out) throw UsageError(path.string() + ": cannot create");
@@ -62,7 +58,7 @@ void WriteCameraPoses(const std::filesystem::path& run_dir, const SlamPipeline& 
   for (const CameraPose& pose : rgbd.camera_poses()) {
     const Eigen::Isometry3d T_world_camera =
         LiftPose(pipeline.scans()[pose.scan_index].T_world_base, std::nullopt) * pose.T_scan_camera;
-    poses.push_back(ToTum(pose.stamp_ns, T_world_camera));
+    poses.push_back(StampedPoseFromIsometry(pose.stamp_ns, T_world_camera));
     sources +=
         bag::FormatTumStamp(pose.stamp_ns) + ',' + std::string(SourceName(pose.source)) + '\n';
   }
@@ -176,7 +172,7 @@ void WriteVisualRun(const std::filesystem::path& run_dir, const std::vector<Visu
                 (frame.step.new_segment ? "1.0000" : confidence) + "\n";
     if (!frame.step.tracked) continue;
     if (frame.step.previous_became_key_frame) key_frames.push_back(trajectory.back());
-    trajectory.push_back(ToTum(frame.stamp_ns, frame.step.T_world_camera));
+    trajectory.push_back(StampedPoseFromIsometry(frame.stamp_ns, frame.step.T_world_camera));
     if (frame.step.new_key_frame) key_frames.push_back(trajectory.back());
   }
   bag::WriteTumTrajectory(files.trajectory(), trajectory);

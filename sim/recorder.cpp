@@ -58,7 +58,8 @@ class RunRecorder {
   void Run(SimRecordResult& result) {
     AddTopics();
     writer_.WriteMessage(topics::kTfStatic, start_ns_,
-                         StaticTransformsMessage(start_ns_, simulation_));
+                         bag::sensor_messages::StaticTransforms(
+                             start_ns_, simulation_.T_base_laser(), simulation_.T_base_optical()));
     const auto& states = simulation_.states();
     for (std::size_t i = 0; i < states.size(); ++i) {
       const double t = static_cast<double>(i) / spec_.robot.odometry.rate_hz;

@@ -1,17 +1,9 @@
 #include "sim/sensor_messages.hpp"
 
 #include "bag/message_header.hpp"
-#include "bag/sensor_messages.hpp"
 #include "bag/topics.hpp"
 
 namespace littermap::sim {
-
-msg::TFMessage StaticTransformsMessage(TimestampNs stamp_ns, const Simulation& simulation) {
-  return msg::TFMessage{
-      {bag::sensor_messages::TransformFromBase(stamp_ns, frames::kLaser, simulation.T_base_laser()),
-       bag::sensor_messages::TransformFromBase(stamp_ns, frames::kCamera,
-                                               simulation.T_base_optical())}};
-}
 
 msg::Imu ImuMessage(TimestampNs stamp_ns, const ImuSample& sample, double tilt_sigma_rad) {
   msg::Imu imu;

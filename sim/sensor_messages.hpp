@@ -1,18 +1,14 @@
 #pragma once
 // The ROS messages of the simulated robot's own sensors, filled the way their drivers fill them:
-// the IMU's orientation with covariance, the camera driver's CameraInfo and the static
-// extrinsics of the simulated mounts. (Scans and odometry: bag/sensor_messages.hpp.)
+// the IMU's orientation with covariance and the camera driver's CameraInfo. (Scans, odometry
+// and the static extrinsics: bag/sensor_messages.hpp.)
 
 #include "bag/ros_messages.hpp"
 #include "core/time.hpp"
 #include "sim/camera_model.hpp"
-#include "sim/route.hpp"
 #include "sim/simulation.hpp"
 
 namespace littermap::sim {
-
-// base_link -> laser and base_link -> camera_color_optical_frame.
-msg::TFMessage StaticTransformsMessage(TimestampNs stamp_ns, const Simulation& simulation);
 
 msg::Imu ImuMessage(TimestampNs stamp_ns, const ImuSample& sample, double tilt_sigma_rad);
 

@@ -18,9 +18,7 @@ namespace {
 std::vector<PlanarPose> PlanarTrajectory(const std::vector<StampedPose>& poses) {
   std::vector<PlanarPose> planar;
   planar.reserve(poses.size());
-  for (const StampedPose& pose : poses) {
-    planar.push_back({pose.position_m.x(), pose.position_m.y(), YawOf(pose.orientation)});
-  }
+  for (const StampedPose& pose : poses) planar.push_back(PlanarPoseOf(pose));
   return planar;
 }
 

@@ -25,13 +25,6 @@ using testing::Perturbed;
 using testing::RoomRun;
 using testing::RoomScans;
 
-std::vector<StampedPose> ToStamped(const std::vector<std::pair<TimestampNs, PlanarPose>>& poses) {
-  std::vector<StampedPose> stamped;
-  for (const auto& [stamp_ns, pose] : poses)
-    stamped.push_back(StampedPoseFromPlanar(stamp_ns, pose));
-  return stamped;
-}
-
 double AteM(const std::vector<StampedPose>& estimate, const std::vector<StampedPose>& reference) {
   return eval::EvaluateTrajectory(estimate, reference, {}).ate_rmse_m;
 }
@@ -58,7 +51,8 @@ TEST(ScanSettling, TruePosesStayWhereTheyAre) {
   EXPECT_GT(settling.alignment.pairs_matched, 33u);
   // Noise-free echoes on straight walls: the alignment's optimum is the truth, up to the
   // solver's tolerance (measured 0.2 mm); a millimetre would be a bias.
-  const double moved_m = AteM(ToStamped(settling.given), ToStamped(settling.settled));
+  const double moved_m =
+      AteM(StampedPosesFromPlanar(settling.given), StampedPosesFromPlanar(settling.settled));
   RecordProperty("true_poses_moved_m", std::to_string(moved_m));
   EXPECT_LT(moved_m, 0.001);
 }
@@ -69,8 +63,8 @@ TEST(ScanSettling, NoisyPosesSettleOntoTheTruth) {
   for (const double sigma_m : {0.02, 0.05}) {
     const std::vector<StampedPose> noisy = Perturbed(run.truth, sigma_m, sigma_m * 25 * kDeg);
     const ScanSettling settling = SettleOnScans(run.scans, PosesOf(run, noisy), kBaseLaser);
-    const std::vector<StampedPose> given = ToStamped(settling.given);
-    const std::vector<StampedPose> settled = ToStamped(settling.settled);
+    const std::vector<StampedPose> given = StampedPosesFromPlanar(settling.given);
+    const std::vector<StampedPose> settled = StampedPosesFromPlanar(settling.settled);
     const double error_m = AteM(given, run.truth);
     const double settled_error_m = AteM(settled, run.truth);
     const double moved_m = AteM(given, settled);

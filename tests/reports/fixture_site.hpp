@@ -27,7 +27,7 @@ inline std::vector<PlanarPose> EastwardTrack(double length_m) {
 }
 
 inline site::RunInput FixtureRun(int week, double length_m,
-                                    const std::vector<site::RunItem>& items) {
+                                 const std::vector<site::RunItem>& items) {
   site::RunInput run;
   run.name = "week " + std::to_string(week);
   run.source_digest = "fixture-week-" + std::to_string(week);

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "site/run_ingest.hpp"
 #include "reports/fixture_site.hpp"
+#include "site/run_ingest.hpp"
 #include "support/temp_dir.hpp"
 
 namespace littermap::reports {
