@@ -16,6 +16,7 @@ struct TopicInfo {
   std::string serialization_format = "cdr";
   std::string offered_qos_profiles;  // rosbag2's YAML text; empty when unknown
   std::string type_description_hash;
+  std::string message_definition;  // the type's ros2msg text as the bag stores it; may be empty
   std::uint64_t message_count = 0;
 };
 

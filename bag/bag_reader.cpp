@@ -1,48 +1,23 @@
 #include "bag/bag_reader.hpp"
 
 #include <algorithm>
+#include <fstream>
 #include <map>
 
-#include "core/sqlite_database.hpp"
+#include "bag/mcap_records.hpp"
+#include "bag/storage_file.hpp"
 
 namespace littermap::bag {
 namespace {
 
-// One .db3 file of the bag, with its topic ids mapped to indices into BagInfo::topics.
-struct StorageFile {
-  std::unique_ptr<SqliteDatabase> database;
-  std::map<std::int64_t, std::size_t> topic_index_by_id;
-  std::optional<SqliteStatement> cursor;
-  bool has_row = false;
-};
-
-// Opens a .db3 and checks it is a rosbag2 database; errors are the user's file's fault.
-std::unique_ptr<SqliteDatabase> OpenStorage(const std::filesystem::path& file) {
-  try {
-    // Read-write when allowed, so a WAL left by a crashed recorder is recovered (checkpointed)
-    // instead of failing; read-only media fall back to a read-only connection.
-    std::unique_ptr<SqliteDatabase> database;
-    try {
-      database = std::make_unique<SqliteDatabase>(file, SqliteDatabase::Mode::kReadWrite);
-      database->Execute("SELECT 1 FROM sqlite_master LIMIT 1");
-    } catch (const SqliteError& e) {
-      if (e.code() != 8 /* SQLITE_READONLY */ && e.code() != 14 /* SQLITE_CANTOPEN */) throw;
-      database = std::make_unique<SqliteDatabase>(file, SqliteDatabase::Mode::kReadOnly);
-    }
-    if (!database->HasTable("messages") || !database->HasTable("topics")) {
-      throw BadInputError(file.string() +
-                          ": a SQLite database but not a ROS 2 bag (no 'topics'/'messages' table)");
-    }
-    return database;
-  } catch (const SqliteError& e) {
-    throw BadInputError(file.string() + ": not a readable ROS 2 bag database (" + e.what() + ")");
-  }
+bool IsStorageFile(const std::filesystem::path& file) {
+  return file.extension() == ".db3" || file.extension() == ".mcap";
 }
 
 std::vector<std::filesystem::path> FindStorageFiles(const std::filesystem::path& directory) {
   std::vector<std::filesystem::path> files;
   for (const auto& entry : std::filesystem::directory_iterator(directory)) {
-    if (entry.path().extension() == ".db3") files.push_back(entry.path());
+    if (IsStorageFile(entry.path())) files.push_back(entry.path());
   }
   // Split bags are NAME_0.db3, NAME_1.db3, ...: order by the number, not the text.
   std::sort(files.begin(), files.end(), [](const auto& a, const auto& b) {
@@ -52,11 +27,21 @@ std::vector<std::filesystem::path> FindStorageFiles(const std::filesystem::path&
   return files;
 }
 
-int SchemaVersion(const SqliteDatabase& database) {
-  if (!database.HasTable("schema")) return 0;
-  auto query = database.Prepare("SELECT MAX(schema_version) FROM schema");
-  return query.Step() ? static_cast<int>(query.ColumnInt64(0)) : 0;
+// MCAP files by their magic, whatever their name; anything else must be a rosbag2 database.
+std::unique_ptr<StorageFileReader> OpenStorageFile(const std::filesystem::path& file) {
+  std::array<char, mcap::kMagic.size()> magic{};
+  std::ifstream(file, std::ios::binary).read(magic.data(), magic.size());
+  const bool is_mcap = std::equal(magic.begin(), magic.end(), mcap::kMagic.begin(),
+                                  [](char a, std::uint8_t b) { return std::uint8_t(a) == b; });
+  return is_mcap ? OpenMcapStorage(file) : OpenSqliteStorage(file);
 }
+
+// One storage file of the bag, with its topic ids mapped to indices into BagInfo::topics.
+struct StorageFile {
+  std::unique_ptr<StorageFileReader> reader;
+  std::map<std::int64_t, std::size_t> topic_index_by_id;
+  std::optional<TimestampNs> next_time;
+};
 
 }  // namespace
 
@@ -67,12 +52,15 @@ struct BagReader::Impl {
   std::vector<StorageFile> files;
   std::vector<std::string> filter;
   std::vector<std::uint64_t> next_index;  // per topic
+  std::vector<std::string> warnings;
+  StampSource stamp_source = StampSource::kHeader;
+  StampAgreement stamp_agreement;
 
   void LocateFiles(const std::filesystem::path& path);
   void ReadTopics(StorageFile& file);
   void CountMessages();
   void StartCursors();
-  void Advance(StorageFile& file);
+  void CollectWarnings();
 };
 
 void BagReader::Impl::LocateFiles(const std::filesystem::path& path) {
@@ -90,9 +78,9 @@ void BagReader::Impl::LocateFiles(const std::filesystem::path& path) {
   const auto metadata_path = path / "metadata.yaml";
   if (std::filesystem::exists(metadata_path)) {
     const BagInfo recorded = ReadMetadataYaml(metadata_path);
-    if (recorded.storage_identifier != "sqlite3") {
+    if (recorded.storage_identifier != "sqlite3" && recorded.storage_identifier != "mcap") {
       throw BadInputError(metadata_path.string() + ": storage '" + recorded.storage_identifier +
-                          "' is not supported (only sqlite3)");
+                          "' is not supported (sqlite3 or mcap)");
     }
     info = recorded;
     for (const auto& file : info.files) {
@@ -109,36 +97,25 @@ void BagReader::Impl::LocateFiles(const std::filesystem::path& path) {
     }
   }
   if (info.files.empty()) {
-    throw BadInputError(path.string() + ": no .db3 file (not a ROS 2 bag with sqlite3 storage)");
+    throw BadInputError(path.string() +
+                        ": no .db3 or .mcap file (not a ROS 2 bag with sqlite3 or MCAP storage)");
   }
 }
 
 void BagReader::Impl::ReadTopics(StorageFile& file) {
-  SqliteDatabase& database = *file.database;
-  const bool has_qos = database.HasColumn("topics", "offered_qos_profiles");
-  const bool has_hash = database.HasColumn("topics", "type_description_hash");
-  auto query =
-      database.Prepare(std::string("SELECT id, name, type, serialization_format, ") +
-                       (has_qos ? "offered_qos_profiles" : "''") + ", " +
-                       (has_hash ? "type_description_hash" : "''") + " FROM topics ORDER BY id");
-  while (query.Step()) {
-    TopicInfo topic;
-    topic.name = query.ColumnText(1);
-    topic.type = query.ColumnText(2);
-    topic.serialization_format = query.ColumnText(3);
-    topic.offered_qos_profiles = query.ColumnText(4);
-    topic.type_description_hash = query.ColumnText(5);
+  for (StoredTopic& stored : file.reader->Topics()) {
+    TopicInfo& topic = stored.info;
     auto known = std::find_if(info.topics.begin(), info.topics.end(),
                               [&](const TopicInfo& t) { return t.name == topic.name; });
     if (known == info.topics.end()) {
       info.topics.push_back(topic);
       known = info.topics.end() - 1;
     } else if (known->type != topic.type) {
-      throw BadInputError(database.file().string() + ": topic '" + topic.name + "' has type " +
-                          topic.type + " here but " + known->type + " elsewhere in the bag");
+      throw BadInputError((directory / info.files[files.size()].relative_path).string() +
+                          ": topic '" + topic.name + "' has type " + topic.type + " here but " +
+                          known->type + " elsewhere in the bag");
     }
-    file.topic_index_by_id[query.ColumnInt64(0)] =
-        static_cast<std::size_t>(known - info.topics.begin());
+    file.topic_index_by_id[stored.id] = static_cast<std::size_t>(known - info.topics.begin());
   }
 }
 
@@ -153,24 +130,20 @@ void BagReader::Impl::CountMessages() {
   bool any = false;
   TimestampNs first = 0, last = 0;
   for (std::size_t i = 0; i < files.size(); ++i) {
-    auto query = files[i].database->Prepare(
-        "SELECT topic_id, COUNT(*), MIN(timestamp), MAX(timestamp) FROM messages GROUP BY "
-        "topic_id");
     BagFileInfo& file_info = info.files[i];
     file_info.message_count = 0;
     TimestampNs file_first = 0, file_last = 0;
-    while (query.Step()) {
-      auto topic = files[i].topic_index_by_id.find(query.ColumnInt64(0));
+    for (const TopicCount& count : files[i].reader->Counts()) {
+      auto topic = files[i].topic_index_by_id.find(count.id);
       if (topic == files[i].topic_index_by_id.end()) {
-        throw BadInputError(files[i].database->file().string() + ": messages refer to topic id " +
-                            std::to_string(query.ColumnInt64(0)) + ", which is not in 'topics'");
+        throw BadInputError((directory / file_info.relative_path).string() +
+                            ": messages refer to topic id " + std::to_string(count.id) +
+                            ", which is not in 'topics'");
       }
-      const auto count = static_cast<std::uint64_t>(query.ColumnInt64(1));
-      const TimestampNs lo = query.ColumnInt64(2), hi = query.ColumnInt64(3);
-      info.topics[topic->second].message_count += count;
-      file_first = file_info.message_count ? std::min(file_first, lo) : lo;
-      file_last = file_info.message_count ? std::max(file_last, hi) : hi;
-      file_info.message_count += count;
+      info.topics[topic->second].message_count += count.count;
+      file_first = file_info.message_count ? std::min(file_first, count.first_ns) : count.first_ns;
+      file_last = file_info.message_count ? std::max(file_last, count.last_ns) : count.last_ns;
+      file_info.message_count += count.count;
     }
     file_info.starting_time_ns = file_first;
     file_info.duration_ns = file_last - file_first;
@@ -193,47 +166,46 @@ void BagReader::Impl::CountMessages() {
 void BagReader::Impl::StartCursors() {
   next_index.assign(info.topics.size(), 0);
   for (auto& file : files) {
-    std::string sql = "SELECT topic_id, timestamp, data FROM messages";
     std::vector<std::int64_t> ids;
     for (const auto& [id, index] : file.topic_index_by_id) {
       if (std::find(filter.begin(), filter.end(), info.topics[index].name) != filter.end()) {
         ids.push_back(id);
       }
     }
-    if (!filter.empty()) {
-      sql += " WHERE topic_id IN (";
-      for (std::size_t i = 0; i < ids.size(); ++i) sql += (i ? ", " : "") + std::to_string(ids[i]);
-      sql += ")";
+    // A filter none of whose topics is in this file: nothing to read here.
+    if (!filter.empty() && ids.empty()) {
+      file.next_time.reset();
+      continue;
     }
-    sql += " ORDER BY timestamp, id";
-    file.cursor.reset();
-    file.cursor.emplace(file.database->Prepare(sql));
-    Advance(file);
+    file.reader->Start(ids);
+    file.next_time = file.reader->PeekTime();
   }
+  CollectWarnings();
 }
 
-void BagReader::Impl::Advance(StorageFile& file) {
-  try {
-    file.has_row = file.cursor->Step();
-  } catch (const SqliteError& e) {
-    throw BadInputError(file.database->file().string() + ": database is damaged: " + e.what());
+void BagReader::Impl::CollectWarnings() {
+  for (auto& file : files) {
+    for (std::string& warning : file.reader->TakeWarnings()) warnings.push_back(std::move(warning));
   }
 }
 
 BagReader::BagReader(const std::filesystem::path& path) : impl_(std::make_unique<Impl>()) {
   impl_->LocateFiles(path);
-  // Topics and counts always come from the databases; metadata.yaml only names the files.
+  // Topics and counts always come from the storage files; metadata.yaml only names the files.
   std::vector<TopicInfo> recorded = std::move(impl_->info.topics);
   impl_->info.topics.clear();
   int schema = -1;
+  bool all_mcap = true;
   for (const auto& file_info : impl_->info.files) {
     StorageFile file;
-    file.database = OpenStorage(impl_->directory / file_info.relative_path);
-    schema = std::max(schema, SchemaVersion(*file.database));
+    file.reader = OpenStorageFile(impl_->directory / file_info.relative_path);
+    schema = std::max(schema, file.reader->SchemaVersion());
+    all_mcap = all_mcap && std::filesystem::path(file_info.relative_path).extension() == ".mcap";
     impl_->ReadTopics(file);
     impl_->files.push_back(std::move(file));
   }
   impl_->info.schema_version = schema;
+  if (impl_->rebuilt) impl_->info.storage_identifier = all_mcap ? "mcap" : "sqlite3";
   for (auto& topic : impl_->info.topics) {
     auto it = std::find_if(recorded.begin(), recorded.end(),
                            [&](const TopicInfo& t) { return t.name == topic.name; });
@@ -252,12 +224,21 @@ bool BagReader::metadata_rebuilt() const { return impl_->rebuilt; }
 
 const std::filesystem::path& BagReader::directory() const { return impl_->directory; }
 
+const std::vector<std::string>& BagReader::warnings() const { return impl_->warnings; }
+
 const TopicInfo& BagReader::RequireTopic(const std::string& name, const std::string& role) const {
   const TopicInfo* topic = impl_->info.FindTopic(name);
   if (topic == nullptr) {
     throw BadInputError(impl_->directory.string() + ": no " + role + " topic " + name);
   }
   return *topic;
+}
+
+void BagReader::SetStampSource(StampSource source) { impl_->stamp_source = source; }
+
+void BagReader::SetVerifyChecksums(bool verify) {
+  for (auto& file : impl_->files) file.reader->SetVerifyChecksums(verify);
+  impl_->StartCursors();
 }
 
 void BagReader::SetTopicFilter(const std::vector<std::string>& topics) {
@@ -267,24 +248,27 @@ void BagReader::SetTopicFilter(const std::vector<std::string>& topics) {
 
 std::optional<BagMessage> BagReader::Next() {
   StorageFile* best = nullptr;
-  TimestampNs best_time = 0;
   for (auto& file : impl_->files) {
-    if (!file.has_row) continue;
-    const TimestampNs time = file.cursor->ColumnInt64(1);
-    if (best == nullptr || time < best_time) {
-      best = &file;
-      best_time = time;
-    }
+    if (file.next_time && (best == nullptr || *file.next_time < *best->next_time)) best = &file;
   }
   if (best == nullptr) return std::nullopt;
+  StoredMessage stored = best->reader->Take();
   BagMessage message;
-  const std::size_t topic = best->topic_index_by_id.at(best->cursor->ColumnInt64(0));
+  const std::size_t topic = best->topic_index_by_id.at(stored.topic_id);
   message.topic = &impl_->info.topics[topic];
-  message.timestamp_ns = best_time;
+  message.timestamp_ns = stored.timestamp_ns;
   message.index = impl_->next_index[topic]++;
-  const auto blob = best->cursor->ColumnBlob(2);
-  message.data.assign(blob.begin(), blob.end());
-  impl_->Advance(*best);
+  message.data = std::move(stored.data);
+  if (const auto header_ns = HeaderStamp(message.topic->type, message.data)) {
+    std::string warning = impl_->stamp_agreement.Observe(message.topic->name, *header_ns,
+                                                         message.timestamp_ns, impl_->stamp_source);
+    if (!warning.empty()) impl_->warnings.push_back(std::move(warning));
+    if (impl_->stamp_source == StampSource::kRecorded) {
+      SetHeaderStamp(message.topic->type, message.data, message.timestamp_ns);
+    }
+  }
+  best->next_time = best->reader->PeekTime();
+  impl_->CollectWarnings();
   return message;
 }
 

@@ -1,9 +1,9 @@
 #pragma once
-// Reads a ROS 2 bag directory with sqlite3 storage written by littermap or by any ROS 2 release
-// since Foxy (older schemas lack the schema/metadata/message_definitions tables and some topic
-// columns). Messages come in receive-time order, optionally filtered by topic, merged across
-// split files. Without metadata.yaml the metadata is rebuilt from the databases, as
-// `ros2 bag reindex` does.
+// Reads a ROS 2 bag directory written by littermap or by any ROS 2 release since Foxy, with
+// sqlite3 storage (bag/sqlite_storage.cpp) or MCAP storage (bag/mcap_storage_reader.cpp), split
+// into several files or not. Messages come in receive-time order, optionally filtered by topic,
+// merged across split files. Without metadata.yaml the metadata is rebuilt from the storage
+// files, as `ros2 bag reindex` does.
 
 #include <cstdint>
 #include <filesystem>
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "bag/bag_info.hpp"
+#include "bag/header_stamps.hpp"
 #include "core/time.hpp"
 
 namespace littermap::bag {
@@ -26,20 +27,33 @@ struct BagMessage {
 
 class BagReader {
  public:
-  // Opens a bag directory (or a single .db3 file). Throws BadInputError when the directory has
-  // no .db3, a database is not a rosbag2 database, or metadata.yaml is malformed.
+  // Opens a bag directory (or a single .db3 or .mcap file). Throws BadInputError when the
+  // directory has no storage file, a file is neither a rosbag2 database nor an MCAP file, or
+  // metadata.yaml is malformed.
   explicit BagReader(const std::filesystem::path& path);
   ~BagReader();
   BagReader(const BagReader&) = delete;
   BagReader& operator=(const BagReader&) = delete;
 
-  // Metadata; message counts and times are read from the databases, so they are right even
+  // Metadata; message counts and times are read from the storage files, so they are right even
   // after a crash left metadata.yaml missing or stale.
   const BagInfo& info() const;
   bool metadata_rebuilt() const;  // true when metadata.yaml was missing or disagreed
   const std::filesystem::path& directory() const;
+  // Damage read past so far, each naming file and offset: a corrupt MCAP chunk whose messages
+  // were skipped, a recording cut off mid-record. Grows as Next() reads on.
+  const std::vector<std::string>& warnings() const;
   // The topic's metadata. Throws BadInputError "BAG: no ROLE topic NAME" when the bag lacks it.
   const TopicInfo& RequireTopic(const std::string& name, const std::string& role) const;
+
+  // Which stamp the header of each message Next() returns carries (bag/header_stamps.hpp):
+  // kRecorded writes the recording stamp into it. Either way a topic whose header and
+  // recording stamps disagree by more than a second adds a warning.
+  void SetStampSource(StampSource source);
+
+  // Checks the checksums of MCAP chunks as they are read (`info --verify`); a chunk that fails
+  // is skipped with a warning. Off by default. Restarts from the first message.
+  void SetVerifyChecksums(bool verify);
 
   // Restricts Next() to these topics (empty: all) and restarts from the first message.
   void SetTopicFilter(const std::vector<std::string>& topics);

@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "bag/bag_schema.hpp"
-#include "core/sqlite_database.hpp"
+#include "bag/storage_file.hpp"
 
 namespace littermap::bag {
 namespace {
@@ -35,7 +35,12 @@ std::string QosFor(TopicQos qos) {
   return {};
 }
 
-std::filesystem::path PrepareDirectory(const std::filesystem::path& directory) {
+// The storage file of a new bag: BAG/BAG_0.db3 or BAG/BAG_0.mcap.
+std::unique_ptr<StorageFileWriter> CreateStorage(const std::filesystem::path& directory,
+                                                 const BagWriterOptions& options) {
+  if (options.storage != "sqlite3" && options.storage != "mcap") {
+    throw UsageError("bag storage '" + options.storage + "' is not supported (sqlite3 or mcap)");
+  }
   std::error_code error;
   if (std::filesystem::exists(directory, error)) {
     if (!std::filesystem::is_directory(directory) || !std::filesystem::is_empty(directory, error)) {
@@ -46,46 +51,26 @@ std::filesystem::path PrepareDirectory(const std::filesystem::path& directory) {
   }
   std::string name = directory.filename().string();
   if (name.empty()) name = directory.parent_path().filename().string();
-  return directory / (name + "_0.db3");
+  if (options.storage == "mcap")
+    return CreateMcapStorage(directory / (name + "_0.mcap"), options.mcap);
+  return CreateSqliteStorage(directory / (name + "_0.db3"), options.ros_distro);
 }
 
 }  // namespace
 
 struct BagWriter::Impl {
   Impl(const std::filesystem::path& dir, BagWriterOptions opts)
-      : directory(dir),
-        options(opts),
-        database(PrepareDirectory(dir), SqliteDatabase::Mode::kCreate) {}
-
-  void CreateSchema() {
-    // WAL + synchronous=FULL: every commit is on disk when it returns, and a reader sees a
-    // consistent database whatever moment the process dies.
-    database.Execute("PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL;");
-    database.Execute(bag_schema::kCreateTables);
-    auto schema = database.Prepare("INSERT INTO schema (schema_version, ros_distro) VALUES (?, ?)");
-    schema.Bind(1, std::int64_t{bag_schema::kSchemaVersion});
-    schema.Bind(2, options.ros_distro);
-    schema.Run();
-    insert.emplace(
-        database.Prepare("INSERT INTO messages (timestamp, topic_id, data) VALUES (?, ?, ?)"));
-  }
-
-  void BeginIfNeeded() {
-    if (in_transaction) return;
-    database.Execute("BEGIN");
-    in_transaction = true;
-    transaction_start = Clock::now();
-  }
+      : directory(dir), options(opts), storage(CreateStorage(dir, opts)) {}
 
   void CommitLocked() {
-    if (!in_transaction) return;
-    database.Execute("COMMIT");
-    in_transaction = false;
+    if (!uncommitted) return;
+    storage->Commit();
+    uncommitted = false;
   }
 
   bool CommitDue() const {
-    return in_transaction && Clock::now() - transaction_start >=
-                                 std::chrono::milliseconds(options.commit_interval_ms);
+    return uncommitted && Clock::now() - first_uncommitted >=
+                              std::chrono::milliseconds(options.commit_interval_ms);
   }
 
   // Commits on a timer, so a writer that goes quiet still has everything on disk within
@@ -102,8 +87,9 @@ struct BagWriter::Impl {
 
   BagInfo Summary() const {
     BagInfo info;
+    info.storage_identifier = options.storage;
     info.ros_distro = options.ros_distro;
-    info.schema_version = bag_schema::kSchemaVersion;
+    info.schema_version = options.storage == "sqlite3" ? bag_schema::kSchemaVersion : 0;
     info.message_count = message_count;
     TimestampNs first = 0, last = 0;
     bool any = false;
@@ -116,20 +102,19 @@ struct BagWriter::Impl {
     }
     info.starting_time_ns = first;
     info.duration_ns = last - first;
-    info.files.push_back({database.file().filename().string(), first, last - first, message_count});
+    info.files.push_back({storage->file().filename().string(), first, last - first, message_count});
     return info;
   }
 
   std::filesystem::path directory;
   BagWriterOptions options;
-  SqliteDatabase database;
-  std::optional<SqliteStatement> insert;
+  std::unique_ptr<StorageFileWriter> storage;
   std::map<std::string, TopicState> topics;
   std::uint64_t message_count = 0;
   std::uint64_t bytes = 0;
-  bool in_transaction = false;
+  bool uncommitted = false;
   bool closed = false;
-  Clock::time_point transaction_start;
+  Clock::time_point first_uncommitted;
   std::mutex mutex;
   std::condition_variable wake;
   bool stopping = false;
@@ -141,7 +126,6 @@ BagWriter::BagWriter(const std::filesystem::path& directory, BagWriterOptions op
     throw UsageError("bag writer: commit_interval_ms must be positive");
   }
   impl_ = std::make_unique<Impl>(directory, options);
-  impl_->CreateSchema();
   impl_->committer = std::thread([impl = impl_.get()] { impl->CommitLoop(); });
 }
 
@@ -155,38 +139,28 @@ BagWriter::~BagWriter() {
 
 void BagWriter::AddTopic(const std::string& name, const std::string& type, TopicQos qos,
                          std::string_view message_definition) {
+  TopicInfo topic;
+  topic.name = name;
+  topic.type = type;
+  topic.offered_qos_profiles = QosFor(qos);
+  topic.message_definition = message_definition;
+  AddTopic(topic);
+}
+
+void BagWriter::AddTopic(const TopicInfo& topic) {
   std::lock_guard lock(impl_->mutex);
-  if (auto it = impl_->topics.find(name); it != impl_->topics.end()) {
-    if (it->second.info.type != type) {
-      throw UsageError("bag " + impl_->directory.string() + ": topic '" + name +
-                       "' already has type " + it->second.info.type + ", not " + type);
+  if (auto it = impl_->topics.find(topic.name); it != impl_->topics.end()) {
+    if (it->second.info.type != topic.type) {
+      throw UsageError("bag " + impl_->directory.string() + ": topic '" + topic.name +
+                       "' already has type " + it->second.info.type + ", not " + topic.type);
     }
     return;
   }
   TopicState state;
-  state.info.name = name;
-  state.info.type = type;
-  state.info.offered_qos_profiles = QosFor(qos);
-  auto insert = impl_->database.Prepare(
-      "INSERT INTO topics (name, type, serialization_format, offered_qos_profiles, "
-      "type_description_hash) VALUES (?, ?, 'cdr', ?, '')");
-  insert.Bind(1, name);
-  insert.Bind(2, type);
-  insert.Bind(3, state.info.offered_qos_profiles);
-  insert.Run();
-  state.id = impl_->database.LastInsertId();
-
-  auto known = impl_->database.Prepare("SELECT 1 FROM message_definitions WHERE topic_type = ?");
-  known.Bind(1, type);
-  if (!message_definition.empty() && !known.Step()) {
-    auto definition = impl_->database.Prepare(
-        "INSERT INTO message_definitions (topic_type, encoding, encoded_message_definition, "
-        "type_description_hash) VALUES (?, 'ros2msg', ?, '')");
-    definition.Bind(1, type);
-    definition.Bind(2, message_definition);
-    definition.Run();
-  }
-  impl_->topics.emplace(name, std::move(state));
+  state.info = topic;
+  state.info.message_count = 0;
+  state.id = impl_->storage->AddTopic(state.info);
+  impl_->topics.emplace(topic.name, std::move(state));
 }
 
 void BagWriter::Write(const std::string& topic, TimestampNs timestamp_ns,
@@ -200,11 +174,11 @@ void BagWriter::Write(const std::string& topic, TimestampNs timestamp_ns,
                      "' written before AddTopic()");
   }
   TopicState& state = it->second;
-  impl_->BeginIfNeeded();
-  impl_->insert->Bind(1, timestamp_ns);
-  impl_->insert->Bind(2, state.id);
-  impl_->insert->BindBlob(3, serialized);
-  impl_->insert->Run();
+  impl_->storage->Write(state.id, timestamp_ns, serialized);
+  if (!impl_->uncommitted) {
+    impl_->uncommitted = true;
+    impl_->first_uncommitted = Clock::now();
+  }
 
   if (state.info.message_count == 0) state.first_ns = state.last_ns = timestamp_ns;
   state.first_ns = std::min(state.first_ns, timestamp_ns);
@@ -234,14 +208,7 @@ void BagWriter::Close() {
   std::lock_guard lock(impl_->mutex);
   impl_->CommitLocked();
   const BagInfo info = impl_->Summary();
-  const std::string yaml = MetadataYamlText(info);
-  auto metadata =
-      impl_->database.Prepare("INSERT INTO metadata (metadata_version, metadata) VALUES (?, ?)");
-  metadata.Bind(1, std::int64_t{info.version});
-  metadata.Bind(2, yaml);
-  metadata.Run();
-  // A finished bag is one self-contained file: it then opens read-only from anywhere.
-  impl_->database.Execute("PRAGMA journal_mode=DELETE");
+  impl_->storage->Close(info);
   WriteMetadataYaml(impl_->directory / "metadata.yaml", info);
 }
 

@@ -1,10 +1,12 @@
 #pragma once
 // Writes a ROS 2 bag directory with rosbag2's sqlite3 storage (schema version 4, as Iron and
-// later write it): BAG/BAG_0.db3 and, on Close(), BAG/metadata.yaml.
+// later write it) or its MCAP storage: BAG/BAG_0.db3 or BAG/BAG_0.mcap and, on Close(),
+// BAG/metadata.yaml.
 //
-// Crash safety: the database runs in WAL mode and the writer commits at least every
-// commit_interval_ms, so a recording killed by SIGKILL or a power cut keeps every message up to
-// the last commit; BagReader rebuilds the metadata a crash left unwritten.
+// Crash safety: the writer commits at least every commit_interval_ms (sqlite3: a WAL
+// transaction; MCAP: the open chunk is written and the file synced), so a recording killed by
+// SIGKILL or a power cut keeps every message up to the last commit; BagReader rebuilds the
+// metadata a crash left unwritten.
 
 #include <cstdint>
 #include <filesystem>
@@ -14,6 +16,7 @@
 #include <string_view>
 
 #include "bag/bag_info.hpp"
+#include "bag/mcap_storage_writer.hpp"
 #include "bag/ros_codec.hpp"
 #include "core/time.hpp"
 
@@ -22,6 +25,8 @@ namespace littermap::bag {
 struct BagWriterOptions {
   std::int64_t commit_interval_ms = 1000;  // longest time a written message stays uncommitted
   std::string ros_distro = "littermap";    // recorded in the schema table and metadata.yaml
+  std::string storage = "sqlite3";         // "sqlite3" | "mcap"
+  McapStorageOptions mcap;                 // with storage "mcap"
 };
 
 // QoS presets for offered_qos_profiles, so `ros2 bag play` republishes topics sensibly.
@@ -39,6 +44,9 @@ class BagWriter {
   // Registers a topic (idempotent for the same name and type; a different type is a UsageError).
   void AddTopic(const std::string& name, const std::string& type, TopicQos qos,
                 std::string_view message_definition = {});
+  // Registers a topic as another bag holds it: type, serialization format, QoS, type hash and
+  // message definition kept as they are (message_count is ignored).
+  void AddTopic(const TopicInfo& topic);
   template <typename M>
   void AddTopic(const std::string& name, TopicQos qos = TopicQos::kSensorData) {
     AddTopic(name, std::string(MessageTraits<M>::kTypeName), qos, MessageTraits<M>::Definition());

@@ -3,6 +3,7 @@
 #include "bag/bag_reader.hpp"
 #include "bag/message_header.hpp"
 #include "bag/message_stream.hpp"
+#include "bag/transform_tree.hpp"
 #include "core/error.hpp"
 
 namespace littermap::bag {
@@ -11,32 +12,34 @@ CameraSetup ReadCameraSetup(const std::filesystem::path& bag, const RunTopics& t
                             Extrinsic extrinsic) {
   BagReader reader(bag);
   reader.RequireTopic(topics.camera_info, "camera info");
-  const bool need_tf = extrinsic == Extrinsic::kRequired;
-  if (need_tf) reader.RequireTopic(topics.tf_static, "static transform");
-  const bool has_tf = reader.info().FindTopic(topics.tf_static) != nullptr;
   CameraSetup setup;
-  bool have_info = false, have_tf = false;
-  reader.SetTopicFilter({topics.camera_info, topics.tf_static});
+  bool have_info = false;
+  reader.SetTopicFilter({topics.camera_info});
   MessageStream stream(reader);
-  while (!have_info || (!have_tf && has_tf)) {
-    const auto message = stream.Next();
-    if (!message) break;
-    if (const auto* info = std::get_if<msg::CameraInfo>(&message->message); info && !have_info) {
+  while (auto message = stream.Next()) {
+    if (const auto* info = std::get_if<msg::CameraInfo>(&message->message)) {
       setup.info = *info;
       have_info = true;
-    }
-    if (const auto* tf = std::get_if<msg::TFMessage>(&message->message)) {
-      for (const auto& transform : tf->transforms) {
-        if (transform.child_frame_id != topics.camera_frame) continue;
-        setup.T_base_camera = ToIsometry(transform.transform);
-        have_tf = true;
-      }
+      break;
     }
   }
   if (!have_info) throw BadInputError(bag.string() + ": no message on " + topics.camera_info);
-  if (!have_tf && need_tf) {
-    throw BadInputError(bag.string() + ": no " + frames::kBase + " -> " + topics.camera_frame +
-                        " transform on " + topics.tf_static);
+
+  // The optical frame is the configured one, or else the one the camera info names.
+  const TransformTree tree = ReadTransformTree(reader, topics);
+  auto T_base_camera = tree.LookupTransform(frames::kBase, topics.camera_frame);
+  if (!T_base_camera && !setup.info.header.frame_id.empty()) {
+    T_base_camera = tree.LookupTransform(frames::kBase, setup.info.header.frame_id);
+  }
+  if (T_base_camera) {
+    setup.T_base_camera = ToIsometry(*T_base_camera);
+  } else if (extrinsic == Extrinsic::kRequired) {
+    throw BadInputError(
+        bag.string() + ": no " + frames::kBase + " -> " + topics.camera_frame +
+        (setup.info.header.frame_id.empty() || setup.info.header.frame_id == topics.camera_frame
+             ? ""
+             : " (or " + setup.info.header.frame_id + ")") +
+        " transform on " + topics.tf_static + " or /tf");
   }
   return setup;
 }

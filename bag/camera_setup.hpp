@@ -1,7 +1,8 @@
 #pragma once
 // The RGB-D camera of a run bag: its CameraInfo (the first on the topic) and the base_link ->
-// optical frame extrinsic from /tf_static (a camera-only bag, such as an imported TUM sequence,
-// may have none).
+// optical frame extrinsic from the fixed transforms on /tf_static and /tf
+// (bag/transform_tree.hpp), for the configured optical frame or else the one the camera info
+// names (a camera-only bag, such as an imported TUM sequence, may have none).
 
 #include <filesystem>
 #include <string>

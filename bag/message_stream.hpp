@@ -33,8 +33,13 @@ class MessageStream {
   explicit MessageStream(BagReader& reader) : reader_(reader) {}
 
   std::optional<DecodedMessage> Next();
-  // One line per topic whose type was not understood, e.g. "/foo: unknown type pkg/msg/Bar".
-  const std::vector<std::string>& warnings() const { return warnings_; }
+  // The bag's damage read past (BagReader::warnings), then one line per topic whose type was
+  // not understood, e.g. "/foo: type pkg/msg/Bar is not used; skipped".
+  std::vector<std::string> warnings() const {
+    std::vector<std::string> all = reader_.warnings();
+    all.insert(all.end(), warnings_.begin(), warnings_.end());
+    return all;
+  }
 
  private:
   BagReader& reader_;

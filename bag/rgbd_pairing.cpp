@@ -4,19 +4,17 @@
 #include <cstdlib>
 #include <utility>
 
-#include "bag/message_header.hpp"
-
 namespace littermap::bag {
 
 RgbdPairing::RgbdPairing(double max_gap_s)
     : max_gap_ns_(static_cast<TimestampNs>(std::llround(max_gap_s * 1e9))) {}
 
-std::optional<CompressedRgbd> RgbdPairing::AddColour(msg::CompressedImage image) {
+std::optional<CompressedRgbd> RgbdPairing::AddColour(CameraImage image) {
   colour_ = std::move(image);
   return Pair();
 }
 
-std::optional<CompressedRgbd> RgbdPairing::AddDepth(msg::CompressedImage image) {
+std::optional<CompressedRgbd> RgbdPairing::AddDepth(CameraImage image) {
   depth_ = std::move(image);
   return Pair();
 }
@@ -28,8 +26,8 @@ void RgbdPairing::Reset() {
 
 std::optional<CompressedRgbd> RgbdPairing::Pair() {
   if (!colour_ || !depth_) return std::nullopt;
-  const TimestampNs stamp_ns = StampOf(colour_->header);
-  if (std::llabs(stamp_ns - StampOf(depth_->header)) > max_gap_ns_) return std::nullopt;
+  const TimestampNs stamp_ns = StampOf(*colour_);
+  if (std::llabs(stamp_ns - StampOf(*depth_)) > max_gap_ns_) return std::nullopt;
   CompressedRgbd frame{stamp_ns, std::move(*colour_), std::move(*depth_)};
   Reset();
   return frame;

@@ -1,7 +1,8 @@
 // Run-bag throughput: recording 640x480 colour (JPEG) + depth (16-bit PNG) at 30 Hz, a 1081-beam
 // laser at 40 Hz and odometry at 50 Hz, encoding included, must run at least 3x faster than real
 // time on one core. One benchmark iteration = one second of sensor data, so the iteration rate
-// ("x_realtime") is the real-time factor. Reading reports MB/s and messages/s.
+// ("x_realtime") is the real-time factor. Reading reports MB/s and messages/s. Each benchmark
+// runs on both storages: /0 sqlite3, /1 MCAP (zstd chunks), /2 MCAP (lz4 chunks).
 
 #include <benchmark/benchmark.h>
 
@@ -121,6 +122,30 @@ void AddTopics(bag::BagWriter& writer) {
   writer.AddTopic<msg::Odometry>(topics::kOdometry);
 }
 
+bag::BagWriterOptions StorageOptions(const benchmark::State& state) {
+  bag::BagWriterOptions options;
+  options.storage = state.range(0) == 0 ? "sqlite3" : "mcap";
+  options.mcap.compression =
+      state.range(0) == 2 ? bag::McapCompression::kLz4 : bag::McapCompression::kZstd;
+  return options;
+}
+
+void SetStorageLabel(benchmark::State& state) {
+  const char* labels[] = {"sqlite3", "mcap zstd", "mcap lz4"};
+  state.SetLabel(labels[state.range(0)]);
+}
+
+// MB/s and messages/s of a benchmark over the bag at `path`, which it then removes.
+void ReportRates(benchmark::State& state, const std::filesystem::path& path, std::uint64_t bytes,
+                 std::uint64_t messages) {
+  state.counters["MB/s"] =
+      benchmark::Counter(static_cast<double>(bytes) / 1e6, benchmark::Counter::kIsRate);
+  state.counters["msgs/s"] =
+      benchmark::Counter(static_cast<double>(messages), benchmark::Counter::kIsRate);
+  SetStorageLabel(state);
+  std::filesystem::remove_all(path);
+}
+
 std::filesystem::path BenchDir(const char* name) {
   auto path = std::filesystem::temp_directory_path() / name;
   std::filesystem::remove_all(path);
@@ -132,7 +157,7 @@ void BM_RecordOneSecondOfSensors(benchmark::State& state) {
   Recorder recorder;
   std::uint64_t messages = 0, bytes = 0;
   {
-    bag::BagWriter writer(path);
+    bag::BagWriter writer(path, StorageOptions(state));
     AddTopics(writer);
     for (auto _ : state) {
       recorder.RecordOneSecond(writer);
@@ -143,24 +168,52 @@ void BM_RecordOneSecondOfSensors(benchmark::State& state) {
   }
   state.counters["x_realtime"] =
       benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
-  state.counters["MB/s"] =
-      benchmark::Counter(static_cast<double>(bytes) / 1e6, benchmark::Counter::kIsRate);
-  state.counters["msgs/s"] =
-      benchmark::Counter(static_cast<double>(messages), benchmark::Counter::kIsRate);
-  std::filesystem::remove_all(path);
+  ReportRates(state, path, bytes, messages);
 }
-BENCHMARK(BM_RecordOneSecondOfSensors)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(5);
+BENCHMARK(BM_RecordOneSecondOfSensors)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(5)
+    ->DenseRange(0, 2);
+
+// 10 s of recording in the storage the benchmark's argument names.
+std::filesystem::path TenSecondBag(const benchmark::State& state, const char* name) {
+  const auto path = BenchDir(name);
+  bag::BagWriter writer(path, StorageOptions(state));
+  AddTopics(writer);
+  Recorder recorder;
+  for (int second = 0; second < 10; ++second) recorder.RecordOneSecond(writer);
+  return path;
+}
+
+std::uint64_t StorageBytes(const bag::BagReader& reader) {
+  std::uint64_t bytes = 0;
+  for (const auto& file : reader.info().files) {
+    bytes += std::filesystem::file_size(reader.directory() / file.relative_path);
+  }
+  return bytes;
+}
+
+// Reads back 10 s of recording, messages as stored (no decoding): the storage alone.
+void BM_ReadRaw(benchmark::State& state) {
+  const auto path = TenSecondBag(state, "littermap-bench-read-raw");
+  std::uint64_t messages = 0, bytes = 0;
+  for (auto _ : state) {
+    bag::BagReader reader(path);
+    while (auto message = reader.Next()) {
+      benchmark::DoNotOptimize(message->data.data());
+      ++messages;
+    }
+    bytes += StorageBytes(reader);
+  }
+  ReportRates(state, path, bytes, messages);
+}
+BENCHMARK(BM_ReadRaw)->Unit(benchmark::kMillisecond)->UseRealTime()->DenseRange(0, 2);
 
 // Reads back and CDR-decodes 10 s of recording (images stay compressed, as a stage that only
 // needs some frames would leave them).
 void BM_ReadAndDecode(benchmark::State& state) {
-  const auto path = BenchDir("littermap-bench-read");
-  {
-    bag::BagWriter writer(path);
-    AddTopics(writer);
-    Recorder recorder;
-    for (int second = 0; second < 10; ++second) recorder.RecordOneSecond(writer);
-  }
+  const auto path = TenSecondBag(state, "littermap-bench-read");
   std::uint64_t messages = 0, bytes = 0;
   for (auto _ : state) {
     bag::BagReader reader(path);
@@ -169,17 +222,11 @@ void BM_ReadAndDecode(benchmark::State& state) {
       benchmark::DoNotOptimize(message->message);
       ++messages;
     }
-    for (const auto& file : reader.info().files) {
-      bytes += std::filesystem::file_size(path / file.relative_path);
-    }
+    bytes += StorageBytes(reader);
   }
-  state.counters["MB/s"] =
-      benchmark::Counter(static_cast<double>(bytes) / 1e6, benchmark::Counter::kIsRate);
-  state.counters["msgs/s"] =
-      benchmark::Counter(static_cast<double>(messages), benchmark::Counter::kIsRate);
-  std::filesystem::remove_all(path);
+  ReportRates(state, path, bytes, messages);
 }
-BENCHMARK(BM_ReadAndDecode)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ReadAndDecode)->Unit(benchmark::kMillisecond)->UseRealTime()->DenseRange(0, 2);
 
 }  // namespace
 }  // namespace littermap

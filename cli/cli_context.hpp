@@ -32,6 +32,7 @@ class CliContext {
 
 // Each file cmd_*.cpp adds its subcommand(s) to the app.
 void RegisterInfoCommand(CLI::App& app, CliContext& context);
+void RegisterConvertCommand(CLI::App& app, CliContext& context);
 void RegisterImportCommands(CLI::App& app, CliContext& context);
 void RegisterSimulateCommand(CLI::App& app, CliContext& context);
 void RegisterCaptureCommand(CLI::App& app, CliContext& context);

@@ -1,6 +1,4 @@
-// littermap detect BAG --run RUN_DIR [-o DIR] [--model MODEL] [--every N]
-// Segments every n-th RGB-D frame, classifies the objects, places them with the run's
-// trajectory and fuses the sightings into litter items: DIR/detections.csv and DIR/items.csv.
+// littermap detect: the detect stage of a run (run/detect_run.hpp)
 
 #include <cstdio>
 #include <filesystem>
@@ -8,60 +6,35 @@
 #include <string>
 
 #include "cli/cli_context.hpp"
-#include "cli/debug_frames.hpp"
-#include "cli/run_stages.hpp"
+#include "cli/sensor_arguments.hpp"
+#include "detect/debug_frames.hpp"
 #include "run/detect_run.hpp"
 
 namespace littermap::cli {
 namespace {
 
-struct DetectArguments {
-  std::string bag;
-  std::string run_dir;
-  std::string output;
-  std::string trajectory;
-  std::string model = LITTERMAP_DEFAULT_MODEL;
-  std::string debug_frames;
-  detect::RunObjectsOptions objects;
-  detect::FusionOptions fusion;
-};
-
-void RunDetect(const DetectArguments& arguments, CliContext& context) {
-  run::DetectRunOptions options;
-  options.model = arguments.model;
-  options.trajectory = arguments.trajectory;
-  options.output_dir = arguments.output;
-  options.objects = arguments.objects;
-  options.fusion = arguments.fusion;
-  DetectStage(arguments.bag, arguments.run_dir, options, context, arguments.debug_frames);
+void DetectStage(const std::filesystem::path& bag, const std::filesystem::path& run_dir,
+                 const run::DetectRunOptions& options, CliContext& context,
+                 const std::filesystem::path& debug_frames) {
+  const run::DetectRunResult result = run::DetectRun(bag, run_dir, options, context.Progress(),
+                                                     detect::DebugFrameWriter(debug_frames));
+  context.FinishProgress();
+  for (const std::string& warning : result.warnings) context.Warn(warning);
+  std::printf("%s\n", run::DetectSummary(result, options.fusion.min_views).c_str());
 }
 
 }  // namespace
 
-void DetectStage(const std::filesystem::path& bag, const std::filesystem::path& run_dir,
-                 const run::DetectRunOptions& options, CliContext& context,
-                 const std::filesystem::path& debug_frames) {
-  if (!debug_frames.empty()) std::filesystem::create_directories(debug_frames);
-  const run::DetectRunResult result = run::DetectRun(
-      bag, run_dir, options, context.Progress(),
-      [&](const detect::RgbdFrame& frame, const detect::FrameSegmentation& segmentation) {
-        if (!debug_frames.empty()) WriteDebugFrame(debug_frames, frame, segmentation);
-      });
-  context.FinishProgress();
-  if (result.objects.frames_without_pose > 0) {
-    context.Warn(std::to_string(result.objects.frames_without_pose) +
-                 " frames lay outside the trajectory and were skipped");
-  }
-  std::printf(
-      "wrote %s: %zu frames, %zu objects, %zu litter items and %zu natural objects seen in >= %d "
-      "views\n%s\n",
-      result.output_dir.c_str(), result.objects.frames, result.objects.objects, result.litter_items,
-      result.natural_objects, options.fusion.min_views,
-      SegmentationTimeLine(result.objects).c_str());
-}
-
 void RegisterDetectCommand(CLI::App& app, CliContext& context) {
+  struct DetectArguments {
+    std::string bag;
+    std::string run_dir;
+    std::string debug_frames;
+    SensorArguments sensors;
+    run::DetectRunOptions options;
+  };
   auto arguments = std::make_shared<DetectArguments>();
+  arguments->options.model = LITTERMAP_DEFAULT_MODEL;
   CLI::App* command = context.AddCommand(
       app, "detect",
       "Detect and classify litter in a run's RGB-D frames: RUN_DIR/detections.csv (per frame) "
@@ -72,30 +45,36 @@ void RegisterDetectCommand(CLI::App& app, CliContext& context) {
   command->add_option("--run", arguments->run_dir, "Run directory of `littermap reconstruct`")
       ->required()
       ->check(CLI::ExistingDirectory);
-  command->add_option("-o,--output", arguments->output,
+  command->add_option("-o,--output", arguments->options.output_dir,
                       "Where to write (default: the run directory)");
   command
-      ->add_option("--trajectory", arguments->trajectory,
+      ->add_option("--trajectory", arguments->options.trajectory,
                    "TUM trajectory to place objects with (default RUN_DIR/trajectory.tum; "
                    "e.g. the simulator's truth)")
       ->check(CLI::ExistingFile);
-  command->add_option("--model", arguments->model, "Classifier model of `littermap train`")
+  command->add_option("--model", arguments->options.model, "Classifier model of `littermap train`")
       ->capture_default_str()
       ->check(CLI::ExistingFile);
-  command->add_option("--every", arguments->objects.every, "Process every n-th frame")
+  command->add_option("--every", arguments->options.objects.every, "Process every n-th frame")
       ->capture_default_str();
   command
-      ->add_option("--min-views", arguments->fusion.min_views,
+      ->add_option("--min-views", arguments->options.fusion.min_views,
                    "Frames an item must be seen in to be kept")
       ->capture_default_str();
   command
-      ->add_option("--association-radius", arguments->fusion.association_radius_m,
+      ->add_option("--association-radius", arguments->options.fusion.association_radius_m,
                    "Sightings this close (m) are one item")
       ->capture_default_str();
   command->add_option("--debug-frames", arguments->debug_frames,
                       "Write a segmentation picture of every processed frame here");
+  AddSensorOptions(command, arguments->sensors);
   command->callback([arguments, &context] {
-    context.run = [arguments, &context] { RunDetect(*arguments, context); };
+    context.run = [arguments, &context] {
+      arguments->options.topic_roles = arguments->sensors.Roles();
+      arguments->options.objects.frames.stamps = arguments->sensors.Stamps();
+      DetectStage(arguments->bag, arguments->run_dir, arguments->options, context,
+                  arguments->debug_frames);
+    };
   });
 }
 

@@ -1,12 +1,9 @@
-// littermap eval trajectory EST.tum REF.tum [--json] [--max-time-difference S] [--rpe-delta M]
-// ATE and RPE with the TUM benchmark's definitions (eval/trajectory_metrics.hpp). The other
-// `eval` subcommands register themselves under it (cli_context.hpp).
+// littermap eval trajectory (eval/trajectory_metrics.hpp); `eval` itself, the others' parent
 
 #include <cstdio>
 #include <memory>
 #include <string>
 
-#include "bag/tum_trajectory.hpp"
 #include "cli/cli_context.hpp"
 #include "eval/trajectory_metrics.hpp"
 
@@ -22,19 +19,9 @@ struct TrajectoryArguments {
 
 void RunTrajectory(const TrajectoryArguments& arguments) {
   const eval::TrajectoryMetrics metrics =
-      eval::EvaluateTrajectory(bag::ReadTumTrajectory(arguments.estimate),
-                               bag::ReadTumTrajectory(arguments.reference), arguments.options);
-  if (arguments.json) {
-    std::printf("%s\n", eval::ToJson(metrics).c_str());
-    return;
-  }
-  std::printf("associated poses   %zu\n", metrics.associated_poses);
-  std::printf("ATE RMSE           %.4f m (mean %.4f m, max %.4f m)\n", metrics.ate_rmse_m,
-              metrics.ate_mean_m, metrics.ate_max_m);
-  std::printf("RPE translation    %.4f m mean, %.4f m RMSE over %zu pairs %.2f m apart\n",
-              metrics.rpe_trans_mean_m, metrics.rpe_trans_rmse_m, metrics.rpe_pairs,
-              arguments.options.rpe_delta_m);
-  std::printf("RPE rotation       %.3f deg mean\n", metrics.rpe_rot_mean_deg);
+      eval::EvaluateTrajectory(arguments.estimate, arguments.reference, arguments.options);
+  std::printf("%s\n", arguments.json ? eval::ToJson(metrics).c_str()
+                                     : eval::ToText(metrics, arguments.options).c_str());
 }
 
 }  // namespace

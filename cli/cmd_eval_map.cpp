@@ -1,16 +1,12 @@
-// littermap eval map BAG TRAJECTORY.tum... [--cell-size M] [--max-range M] [--json]
-// How sharp a map each trajectory draws from the bag's scans (eval/map_sharpness.hpp).
+// littermap eval map (reconstruct/trajectory_map_sharpness.hpp)
 
 #include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "bag/tum_trajectory.hpp"
-#include "cli/bag_scans.hpp"
 #include "cli/cli_context.hpp"
-#include "core/error.hpp"
-#include "eval/map_sharpness.hpp"
+#include "reconstruct/trajectory_map_sharpness.hpp"
 
 namespace littermap::cli {
 namespace {
@@ -18,49 +14,19 @@ namespace {
 struct MapArguments {
   std::string bag;
   std::vector<std::string> trajectories;
-  std::string scan_topic = bag::RunTopics{}.scan;
   bool json = false;
-  eval::MapSharpnessOptions options;
+  reconstruct::TrajectoryMapsOptions options;
 };
 
 void RunMap(const MapArguments& arguments, CliContext& context) {
-  arguments.options.Validate();
-  const auto [T_base_laser, scans] = ReadBagScans(arguments.bag, arguments.scan_topic, context);
-  std::vector<eval::MapSharpness> results;
-  for (const std::string& path : arguments.trajectories) {
-    context.Status("drawing the scans with " + path);
-    const std::vector<StampedPose> trajectory = bag::ReadTumTrajectory(path);
-    eval::MapSharpness sharpness;
-    try {
-      sharpness = eval::MeasureMapSharpness(scans, T_base_laser, trajectory, arguments.options);
-    } catch (const BadInputError& error) {
-      throw BadInputError(path + ": " + error.what());
-    }
-    if (sharpness.scans_drawn < sharpness.scans) {
-      char within[64];
-      std::snprintf(within, sizeof within, "%g s", arguments.options.max_time_difference_s);
-      context.Warn(path + ": " + std::to_string(sharpness.scans - sharpness.scans_drawn) + " of " +
-                   std::to_string(sharpness.scans) + " scans have no pose within " + within +
-                   " and are not drawn; counts of trajectories that draw different scans do "
-                   "not compare");
-    }
-    results.push_back(sharpness);
-  }
+  const std::vector<eval::MapSharpness> maps = reconstruct::MeasureTrajectoryMaps(
+      arguments.bag, arguments.trajectories, arguments.options,
+      [&context](const Progress& step) { context.Status(std::string(step.task)); },
+      [&context](const std::string& warning) { context.Warn(warning); });
   context.FinishProgress();
-  if (arguments.json) {
-    std::printf("%s\n", eval::ToJson(arguments.trajectories, results, arguments.options).c_str());
-    return;
-  }
-  std::printf("occupied %.0f cm cells of the echoes within %.1f m (fewer: sharper map)\n",
-              100 * arguments.options.cell_size_m, arguments.options.max_range_m);
-  std::printf("%12s %9s %12s %12s  %s\n", "cells", "vs first", "echoes", "scans", "trajectory");
-  for (std::size_t i = 0; i < results.size(); ++i) {
-    std::printf("%12zu %8.1f%% %12zu %5zu/%-6zu  %s\n", results[i].occupied_cells,
-                100.0 * static_cast<double>(results[i].occupied_cells) /
-                    static_cast<double>(results.front().occupied_cells),
-                results[i].echoes_drawn, results[i].scans_drawn, results[i].scans,
-                arguments.trajectories[i].c_str());
-  }
+  const auto& names = arguments.trajectories;
+  std::printf("%s\n", arguments.json ? eval::ToJson(names, maps, arguments.options.map).c_str()
+                                     : eval::ToText(names, maps, arguments.options.map).c_str());
 }
 
 }  // namespace
@@ -80,13 +46,14 @@ void RegisterEvalMapCommand(CLI::App& app, CliContext& context) {
                   "reference; the table compares each with the first")
       ->required()
       ->check(CLI::ExistingFile);
-  map->add_option("--scan-topic", arguments->scan_topic, "LaserScan topic")->capture_default_str();
-  map->add_option("--cell-size", arguments->options.cell_size_m, "Grid cell size, metres")
+  map->add_option("--scan-topic", arguments->options.scan_topic, "LaserScan topic")
       ->capture_default_str();
-  map->add_option("--max-range", arguments->options.max_range_m,
+  map->add_option("--cell-size", arguments->options.map.cell_size_m, "Grid cell size, metres")
+      ->capture_default_str();
+  map->add_option("--max-range", arguments->options.map.max_range_m,
                   "Echoes further than this are not drawn, metres")
       ->capture_default_str();
-  map->add_option("--max-time-difference", arguments->options.max_time_difference_s,
+  map->add_option("--max-time-difference", arguments->options.map.max_time_difference_s,
                   "Largest stamp difference between a scan and its pose, seconds")
       ->capture_default_str();
   map->add_flag("--json", arguments->json,

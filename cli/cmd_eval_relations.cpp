@@ -1,20 +1,12 @@
-// littermap eval relations TRAJ.tum LOG.relations (--scanmap LOG.scanmap | --log LOG) [--json]
-// The relations metric of Kuemmerle et al. 2009 (eval/pose_relations.hpp): a trajectory of one
-// pose per scan graded by the benchmark's manually verified relative motions. The scans' stamps
-// in the relations' time base come from a .scanmap (a re-stamped, thinned log such as
-// ../shared/datasets/carmen/*-corrected) or from the raw CARMEN log itself.
+// littermap eval relations: Kuemmerle et al.'s relations metric (eval/pose_relations.hpp)
 
 #include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
-#include "bag/tum_trajectory.hpp"
 #include "cli/cli_context.hpp"
 #include "core/error.hpp"
-#include "core/pose3.hpp"
 #include "eval/pose_relations.hpp"
 #include "importers/carmen_log.hpp"
 
@@ -30,39 +22,12 @@ struct RelationsArguments {
   eval::PoseRelationOptions options;
 };
 
-nlohmann::ordered_json StatisticsJson(const eval::ErrorStatistics& s) {
-  return {{"mean", s.mean}, {"stddev", s.stddev}, {"max", s.max}};
-}
-
-nlohmann::ordered_json ErrorsJson(const eval::RelationErrors& e) {
-  return {{"trans_m", StatisticsJson(e.translation_m)},
-          {"trans_sq_m2", StatisticsJson(e.translation_sq_m2)},
-          {"rot_deg", StatisticsJson(e.rotation_deg)},
-          {"rot_sq_deg2", StatisticsJson(e.rotation_sq_deg2)},
-          {"trans_median_m", e.translation_median_m},
-          {"over_large_error", e.over_large_error}};
-}
-
-void PrintErrors(const char* name, const eval::RelationErrors& e, double large_error_m) {
-  std::printf("%s\n", name);
-  std::printf("  translation      %.4f +- %.4f m (median %.4f m, max %.3f m, %zu over %.2f m)\n",
-              e.translation_m.mean, e.translation_m.stddev, e.translation_median_m,
-              e.translation_m.max, e.over_large_error, large_error_m);
-  std::printf("  translation^2    %.5f +- %.5f m^2\n", e.translation_sq_m2.mean,
-              e.translation_sq_m2.stddev);
-  std::printf("  rotation         %.3f +- %.3f deg (max %.2f deg)\n", e.rotation_deg.mean,
-              e.rotation_deg.stddev, e.rotation_deg.max);
-  std::printf("  rotation^2       %.3f +- %.3f deg^2\n", e.rotation_sq_deg2.mean,
-              e.rotation_sq_deg2.stddev);
-}
-
 std::vector<double> ScanStamps(const RelationsArguments& arguments, CliContext& context) {
   if (!arguments.scanmap.empty()) return eval::ReadScanMapStamps(arguments.scanmap);
   context.Status("reading the scans of " + arguments.log);
   const importers::CarmenLog log = importers::ReadCarmenLog(arguments.log, context.Progress());
   context.FinishProgress();
   std::vector<double> stamps;
-  stamps.reserve(log.scans.size());
   for (const importers::CarmenLaserRecord& scan : log.scans) stamps.push_back(scan.timestamp_s);
   return stamps;
 }
@@ -70,32 +35,10 @@ std::vector<double> ScanStamps(const RelationsArguments& arguments, CliContext& 
 void RunRelations(const RelationsArguments& arguments, CliContext& context) {
   const std::vector<eval::PoseRelation> relations = eval::ReadPoseRelations(arguments.relations);
   const std::vector<double> stamps = ScanStamps(arguments, context);
-  std::vector<PlanarPose> trajectory;
-  for (const StampedPose& pose : bag::ReadTumTrajectory(arguments.trajectory)) {
-    trajectory.push_back(PlanarPoseOf(pose));
-  }
-  eval::PoseRelationMetrics metrics;
-  try {
-    metrics = eval::EvaluatePoseRelations(trajectory, stamps, relations, arguments.options);
-  } catch (const BadInputError& error) {
-    throw BadInputError(arguments.trajectory + ": " + error.what());
-  }
-  if (arguments.json) {
-    nlohmann::ordered_json json;
-    json["relations"] = metrics.relations;
-    json["used"] = metrics.used;
-    json["unmatched"] = metrics.unmatched;
-    json["metric_evaluator"] = ErrorsJson(metrics.component);
-    json["cartographer"] = ErrorsJson(metrics.cartographer);
-    std::printf("%s\n", json.dump(2).c_str());
-    return;
-  }
-  std::printf("relations          %zu used of %zu (%zu with an end at no scan)\n", metrics.used,
-              metrics.relations, metrics.unmatched);
-  PrintErrors("metricEvaluator (component difference)", metrics.component,
-              arguments.options.large_error_m);
-  PrintErrors("Cartographer (est * inv(relation))", metrics.cartographer,
-              arguments.options.large_error_m);
+  const eval::PoseRelationMetrics metrics =
+      eval::EvaluatePoseRelations(arguments.trajectory, stamps, relations, arguments.options);
+  std::printf("%s\n", arguments.json ? eval::ToJson(metrics).c_str()
+                                     : eval::ToText(metrics, arguments.options).c_str());
 }
 
 }  // namespace

@@ -1,24 +1,15 @@
-// littermap ingest SITE.gpkg RUN_DIR: adds a reconstructed run (RUN_DIR/trajectory.tum and
-// RUN_DIR/items.csv from `detect`) to a site database. Idempotent. A simulator TRUTH_DIR
-// (trajectory.tum, litter.csv) is accepted too: its truth stands in for detected items, e.g. to
-// compare a detected run with what was really there.
-// Registration: the first run with a map (RUN_DIR/map.yaml) defines the site map; later runs
-// start from the dock (the site origin, or --initial) and are placed by matching their map to
-// the site map, refused when the match is poor; --transform places a run by hand
-// (site/run_directory_ingest.hpp).
+// littermap ingest SITE.gpkg RUN_DIR: adds a reconstructed run (trajectory.tum, items.csv from
+// `detect`, map.yaml) or a simulator truth directory to a site database, placed by matching its
+// map to the site map or by hand (site/run_directory_ingest.hpp, site/run_placement.hpp).
 
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <numbers>
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "cli/cli_context.hpp"
-#include "cli/run_stages.hpp"
-#include "db/site_database.hpp"
 #include "site/run_directory_ingest.hpp"
 
 namespace littermap::cli {
@@ -40,38 +31,13 @@ std::optional<PlanarPose> PoseArgument(const std::vector<double>& values) {
 void RunIngest(IngestArguments arguments, CliContext& context) {
   arguments.options.placement.initial = PoseArgument(arguments.initial);
   arguments.options.placement.transform = PoseArgument(arguments.transform);
-  db::SiteDatabase site = db::SiteDatabase::Open(arguments.site);
-  const site::RunDirectoryIngestResult run =
-      site::IngestRunDirectory(site, arguments.run_dir, arguments.options);
-  for (const std::string& warning : run.warnings) context.Warn(warning);
-  for (const std::string& note : run.notes) std::printf("%s\n", note.c_str());
-  const site::IngestResult& result = run.ingest;
-  if (result.already_ingested) {
-    std::printf("Run %s is already in %s as run %lld; nothing changed\n", run.name.c_str(),
-                arguments.site.c_str(), static_cast<long long>(result.run_id));
-    return;
-  }
-  std::printf(
-      "Ingested run %lld '%s': %zu poses, %.1f m driven, %.0f m2 observed, %zu detections "
-      "(%zu new items, %zu seen again",
-      static_cast<long long>(result.run_id), run.name.c_str(), result.poses, result.length_m,
-      result.observed_area_m2, result.detections, result.new_items, result.items_seen_again);
-  if (run.simulator_truth) {
-    std::printf(", %zu outside the camera coverage skipped", result.items_unobserved);
-  }
-  std::printf(")\n");
+  const site::RunDirectoryIngestResult result =
+      site::IngestRunDirectory(arguments.site, arguments.run_dir, arguments.options);
+  for (const std::string& warning : result.warnings) context.Warn(warning);
+  std::printf("%s\n", site::IngestSummary(result, arguments.site).c_str());
 }
 
 }  // namespace
-
-void IngestStage(const std::filesystem::path& site, const std::filesystem::path& run_dir,
-                 const std::string& name, CliContext& context) {
-  IngestArguments arguments;
-  arguments.site = site.string();
-  arguments.run_dir = run_dir.string();
-  arguments.options.name = name;
-  RunIngest(std::move(arguments), context);
-}
 
 void RegisterIngestCommand(CLI::App& app, CliContext& context) {
   auto arguments = std::make_shared<IngestArguments>();
@@ -91,32 +57,21 @@ void RegisterIngestCommand(CLI::App& app, CliContext& context) {
       ->add_option("--transform", arguments->transform,
                    "Place the run's frame at X Y DEG in the site frame by hand, without matching")
       ->expected(3);
-  ingest
-      ->add_option("--search-window", arguments->options.placement.registration.window_m,
-                   "How far (m) from --initial the run's map is searched for on the site map")
-      ->capture_default_str();
-  ingest
-      ->add_option("--min-matching-ratio",
-                   arguments->options.placement.registration.min_matching_ratio,
-                   "Share of the run's map that must land on the site map")
-      ->capture_default_str();
+  ingest->option_defaults()->always_capture_default();  // shown in --help
+  ingest->add_option("--search-window", arguments->options.placement.registration.window_m,
+                     "How far (m) from --initial the run's map is searched for on the site map");
+  ingest->add_option("--min-matching-ratio",
+                     arguments->options.placement.registration.min_matching_ratio,
+                     "Share of the run's map that must land on the site map");
   auto& options = arguments->options.ingest;
-  ingest
-      ->add_option("--same-item-radius", options.same_item_radius_m,
-                   "An item of the same class this close (m) to a known one is that item")
-      ->capture_default_str();
-  ingest
-      ->add_option("--detection-range", options.camera.max_detection_range_m,
-                   "Camera detection range on the ground (m)")
-      ->capture_default_str();
-  ingest
-      ->add_option("--camera-hfov", options.camera.horizontal_fov_deg,
-                   "Camera horizontal field of view (deg)")
-      ->capture_default_str();
-  ingest
-      ->add_option("--coverage-cell", options.coverage_cell_size_m,
-                   "Cell size (m) of the stored camera coverage")
-      ->capture_default_str();
+  ingest->add_option("--same-item-radius", options.same_item_radius_m,
+                     "An item of the same class this close (m) to a known one is that item");
+  ingest->add_option("--detection-range", options.camera.max_detection_range_m,
+                     "Camera detection range on the ground (m)");
+  ingest->add_option("--camera-hfov", options.camera.horizontal_fov_deg,
+                     "Camera horizontal field of view (deg)");
+  ingest->add_option("--coverage-cell", options.coverage_cell_size_m,
+                     "Cell size (m) of the stored camera coverage");
   ingest->callback([arguments, &context] {
     context.run = [arguments, &context] { RunIngest(*arguments, context); };
   });

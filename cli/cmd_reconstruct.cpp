@@ -1,4 +1,4 @@
-// littermap reconstruct BAG -o RUN_DIR [--scan-topic T] [--odom-topic T]
+// littermap reconstruct BAG -o RUN_DIR [--topic ROLE=T]... [--stamps header|recorded]
 // Trajectory, occupancy map and quality of a run (DESIGN.md, "The command line").
 
 #include <cstdio>
@@ -6,9 +6,7 @@
 #include <string>
 
 #include "cli/cli_context.hpp"
-#include "cli/run_stages.hpp"
-#include "reconstruct/options_file.hpp"
-#include "reconstruct/reconstruction.hpp"
+#include "cli/sensor_arguments.hpp"
 #include "run/reconstruct_run.hpp"
 
 namespace littermap::cli {
@@ -17,40 +15,26 @@ namespace {
 struct ReconstructArguments {
   std::string bag;
   std::string run_dir;
-  std::string options_file;
-  reconstruct::ReconstructionOptions options;
+  std::string scan_topic, odometry_topic;  // the older way to name the two roles
+  SensorArguments sensors;
+  run::ReconstructRunOptions options;
 };
 
-void RunReconstruct(const ReconstructArguments& arguments, CliContext& context) {
-  reconstruct::ReconstructionOptions options = arguments.options;
-  if (!arguments.options_file.empty()) {
-    reconstruct::ApplyOptionsFile(arguments.options_file, &options);
+void RunReconstruct(ReconstructArguments arguments, CliContext& context) {
+  arguments.options.topic_roles = arguments.sensors.Roles();
+  if (!arguments.scan_topic.empty()) arguments.options.topic_roles["scan"] = arguments.scan_topic;
+  if (!arguments.odometry_topic.empty()) {
+    arguments.options.topic_roles["odometry"] = arguments.odometry_topic;
   }
-  ReconstructStage(arguments.bag, arguments.run_dir, options, context);
+  arguments.options.reconstruction.stamps = arguments.sensors.Stamps();
+  const run::ReconstructRunResult result =
+      run::ReconstructRun(arguments.bag, arguments.run_dir, arguments.options, context.Progress());
+  context.FinishProgress();
+  for (const std::string& warning : result.warnings) context.Warn(warning);
+  std::printf("%s\n", run::ReconstructSummary(result).c_str());
 }
 
 }  // namespace
-
-void ReconstructStage(const std::filesystem::path& bag, const std::filesystem::path& run_dir,
-                      const reconstruct::ReconstructionOptions& options, CliContext& context) {
-  const run::ReconstructRunResult result =
-      run::ReconstructRun(bag, run_dir, options, context.Progress());
-  context.FinishProgress();
-  for (const std::string& warning : result.warnings) context.Warn(warning);
-  if (result.visual_odometry) {
-    std::printf(
-        "wrote %s: %zu of %zu frames tracked, %zu key frames, %zu segments, %.2f s "
-        "(%.0f frames/s)\n",
-        run_dir.c_str(), result.visual.tracked, result.visual.frames, result.visual.key_frames,
-        result.visual.segments, result.run_time_s, result.scans_per_s);
-    return;
-  }
-  std::printf(
-      "wrote %s: %zu poses, %zu key frames, loops %zu accepted / %zu rejected, %.2f s "
-      "(%.0f scans/s)\n",
-      run_dir.c_str(), result.poses, result.key_frames, result.loops_accepted,
-      result.loops_rejected, result.run_time_s, result.scans_per_s);
-}
 
 void RegisterReconstructCommand(CLI::App& app, CliContext& context) {
   auto arguments = std::make_shared<ReconstructArguments>();
@@ -65,19 +49,20 @@ void RegisterReconstructCommand(CLI::App& app, CliContext& context) {
       ->required()
       ->check(CLI::ExistingPath);
   command->add_option("-o,--output", arguments->run_dir, "Run directory to write")->required();
-  command->add_option("--scan-topic", arguments->options.topics.scan, "LaserScan topic")
-      ->capture_default_str();
-  command->add_option("--odom-topic", arguments->options.topics.odometry, "Odometry topic")
-      ->capture_default_str();
+  reconstruct::ReconstructionOptions& options = arguments->options.reconstruction;
+  command->add_option("--scan-topic", arguments->scan_topic, "LaserScan topic (= --topic scan=T)");
+  command->add_option("--odom-topic", arguments->odometry_topic,
+                      "Odometry topic (= --topic odometry=T)");
+  AddSensorOptions(command, arguments->sensors);
   command
-      ->add_option("--options", arguments->options_file,
+      ->add_option("--options", arguments->options.options_file,
                    "YAML file of tuning options (unknown keys are errors)")
       ->check(CLI::ExistingFile);
-  command->add_flag("--no-loop-closure{false}", arguments->options.slam.loop_closure,
+  command->add_flag("--no-loop-closure{false}", options.slam.loop_closure,
                     "Track and map without loop closure (for comparisons)");
-  command->add_flag("--no-rgbd{false}", arguments->options.rgbd,
+  command->add_flag("--no-rgbd{false}", options.rgbd,
                     "Track with the laser alone, without the RGB-D routine (for comparisons)");
-  command->add_flag("--no-gyro{false}", arguments->options.gyro_heading,
+  command->add_flag("--no-gyro{false}", options.gyro_heading,
                     "Turn the odometry by the wheels alone, not by the IMU's yaw rate (for "
                     "comparisons)");
   command->callback([arguments, &context] {

@@ -2,26 +2,14 @@
 // DIR/index.html (self-contained) and DIR/report.json.
 
 #include <cstdio>
-#include <ctime>
 #include <memory>
 #include <string>
 
 #include "cli/cli_context.hpp"
-#include "cli/date_argument.hpp"
-#include "cli/report_command.hpp"
-#include "core/time.hpp"
-#include "littermap_version.hpp"
+#include "core/utc_date.hpp"
 #include "reports/report_files.hpp"
 
 namespace littermap::cli {
-
-reports::ReportFilesOptions DefaultReportOptions() {
-  reports::ReportFilesOptions options;
-  options.html.generated_utc = FormatUtc(static_cast<double>(std::time(nullptr)));
-  options.html.version = LITTERMAP_VERSION;
-  return options;
-}
-
 namespace {
 
 struct ReportArguments {
@@ -29,19 +17,15 @@ struct ReportArguments {
   std::string output;
   std::string from;
   std::string to;
-  reports::ReportFilesOptions options = DefaultReportOptions();
+  reports::ReportFilesOptions options = reports::StampedReportFilesOptions();
 };
 
 void RunReport(ReportArguments arguments) {
-  arguments.options.figures.from_time_s = ParseDateArgument(arguments.from, "--from");
-  arguments.options.figures.to_time_s = ParseDateArgument(arguments.to, "--to");
-  db::SiteDatabase site = db::SiteDatabase::Open(arguments.site);
-  const std::filesystem::path dir = arguments.output;
-  const reports::SiteReport report = reports::WriteReportFiles(site, dir, arguments.options);
-  std::printf("Report of %s: %zu %s, %zu litter items, %zu hotspots\n%s\n",
-              report.site_name.c_str(), report.runs.size(),
-              report.runs.size() == 1 ? "run" : "runs", report.items, report.hotspots.size(),
-              (dir / "index.html").c_str());
+  arguments.options.figures.from_time_s = ParseUtcDate(arguments.from, "--from");
+  arguments.options.figures.to_time_s = ParseUtcDate(arguments.to, "--to");
+  const reports::SiteReport report =
+      reports::WriteReportFiles(arguments.site, arguments.output, arguments.options);
+  std::printf("%s\n", reports::ReportSummary(report, arguments.output).c_str());
 }
 
 }  // namespace
@@ -55,14 +39,11 @@ void RegisterReportCommand(CLI::App& app, CliContext& context) {
   command->add_option("--from", arguments->from, "Only runs starting on or after (YYYY-MM-DD)");
   command->add_option("--to", arguments->to, "Only runs starting before (YYYY-MM-DD)");
   auto& figures = arguments->options.figures;
-  command->add_option("--hotspots", figures.max_hotspots, "Number of hotspots listed")
-      ->capture_default_str();
-  command
-      ->add_option("--bandwidth", figures.heatmap.density.kernel.bandwidth_m,
-                   "Density kernel radius (m), also the hotspot radius")
-      ->capture_default_str();
-  command->add_option("--cell-size", figures.heatmap.cell_size_m, "Density cell size (m)")
-      ->capture_default_str();
+  command->option_defaults()->always_capture_default();  // shown in --help
+  command->add_option("--hotspots", figures.max_hotspots, "Number of hotspots listed");
+  command->add_option("--bandwidth", figures.heatmap.density.kernel.bandwidth_m,
+                      "Density kernel radius (m), also the hotspot radius");
+  command->add_option("--cell-size", figures.heatmap.cell_size_m, "Density cell size (m)");
   command->callback(
       [arguments, &context] { context.run = [arguments] { RunReport(*arguments); }; });
 }

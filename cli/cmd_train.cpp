@@ -1,22 +1,14 @@
-// littermap samples BAG --truth TRUTH_DIR -o SAMPLES [--every N]
-//   object crops of a simulated run, labelled from its ground truth (detect/object_sample.hpp)
-// littermap train SAMPLES... -o MODEL [--validate SAMPLES]
-//   the litter classifier (detect/litter_classifier.hpp), optionally scored on held-out samples
+// littermap samples (detect/sample_collection.hpp), train (detect/classifier_training.hpp)
 
 #include <cstdio>
-#include <filesystem>
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "bag/tum_trajectory.hpp"
 #include "cli/cli_context.hpp"
-#include "cli/debug_frames.hpp"
-#include "core/error.hpp"
-#include "detect/litter_classifier.hpp"
-#include "detect/run_objects.hpp"
-#include "eval/detection_metrics.hpp"
+#include "detect/classifier_training.hpp"
+#include "detect/sample_collection.hpp"
+#include "run/detect_run.hpp"
 
 namespace littermap::cli {
 namespace {
@@ -25,60 +17,15 @@ struct SamplesArguments {
   std::string bag;
   std::string truth_dir;
   std::string output;
-  std::string debug_frames;
-  double label_radius_m = 0.2;
-  detect::RunObjectsOptions options;
+  detect::SampleCollectionOptions options;
 };
 
-// The label of an object at xy: the class of the truth object within the radius, "clutter" when
-// none is within twice the radius, empty (ambiguous: not a sample) in between.
-std::string LabelAt(const std::vector<eval::TruthObject>& truth, const Eigen::Vector2d& xy,
-                    double radius) {
-  double best = 1e9;
-  const eval::TruthObject* nearest = nullptr;
-  for (const auto& object : truth) {
-    const double d = (object.position_m - xy).norm();
-    if (d < best) best = d, nearest = &object;
-  }
-  if (nearest != nullptr && best <= radius) {
-    return nearest->litter ? nearest->class_name : std::string("natural");
-  }
-  return best > 2 * radius ? "clutter" : "";
-}
-
 void RunSamples(const SamplesArguments& arguments, CliContext& context) {
-  const std::filesystem::path truth_dir = arguments.truth_dir;
-  const auto truth = eval::ReadTruthDirectory(truth_dir);
-  const auto trajectory = bag::ReadTumTrajectory(truth_dir / "trajectory.tum");
-  std::vector<detect::ObjectSample> samples;
-  std::map<std::string, int> counts;
-  const std::string source = std::filesystem::path(arguments.bag).filename().string();
-  if (!arguments.debug_frames.empty()) std::filesystem::create_directories(arguments.debug_frames);
-  const auto result = detect::ForEachRunObject(
-      arguments.bag, trajectory, arguments.options, context.Progress(),
-      [&](const detect::PlacedObject& placed) {
-        std::string label =
-            LabelAt(truth, placed.position_world_m.head<2>(), arguments.label_radius_m);
-        if (label.empty()) return;
-        detect::ObjectSample sample = placed.sample;
-        sample.label = label;
-        sample.source = source + ":" + std::to_string(placed.frame->index);
-        ++counts[label];
-        samples.push_back(std::move(sample));
-      },
-      [&](const detect::RgbdFrame& frame, const detect::FrameSegmentation& segmentation) {
-        if (!arguments.debug_frames.empty())
-          WriteDebugFrame(arguments.debug_frames, frame, segmentation);
-      });
+  const detect::SampleCollection collection = detect::CollectSamples(
+      arguments.bag, arguments.truth_dir, arguments.output, arguments.options, context.Progress());
   context.FinishProgress();
-  detect::WriteSamples(arguments.output, samples);
-  std::printf("wrote %s: %zu samples (", arguments.output.c_str(), samples.size());
-  const char* separator = "";
-  for (const auto& [label, count] : counts) {
-    std::printf("%s%s %d", separator, label.c_str(), count);
-    separator = ", ";
-  }
-  std::printf(")\n%s\n", SegmentationTimeLine(result).c_str());
+  std::printf("%s\n%s\n", detect::CollectionSummary(collection, arguments.output).c_str(),
+              run::SegmentationTimeLine(collection.objects).c_str());
 }
 
 struct TrainArguments {
@@ -88,47 +35,19 @@ struct TrainArguments {
   detect::ClassifierOptions options;
 };
 
-void PrintValidation(const detect::LitterClassifier& classifier,
-                     const std::vector<detect::ObjectSample>& validation) {
-  using detect::ClassifierMethod;
-  std::printf("\nheld-out samples: %zu\n%-30s %10s %16s\n", validation.size(), "method",
-              "class acc.", "litter/natural acc.");
-  for (const auto method :
-       {ClassifierMethod::kNaiveBayes, ClassifierMethod::kGmmEnergy, ClassifierMethod::kEmd,
-        ClassifierMethod::kHu, ClassifierMethod::kCombined}) {
-    std::size_t correct = 0, split_correct = 0, split_total = 0;
-    for (const auto& sample : validation) {
-      const std::size_t predicted = classifier.Predict(sample, method);
-      const std::size_t truth = classifier.ClassIndex(sample.label);
-      correct += predicted == truth;
-      if (sample.label == "clutter") continue;  // litter vs natural: objects of either kind
-      ++split_total;
-      split_correct += classifier.is_litter(predicted) == IsLitterClass(sample.label);
-    }
-    std::printf("%-30s %10.3f %16.3f\n", detect::ClassifierMethodName(method),
-                double(correct) / double(std::max<std::size_t>(1, validation.size())),
-                double(split_correct) / double(std::max<std::size_t>(1, split_total)));
-  }
-}
-
 void RunTrain(const TrainArguments& arguments) {
-  std::vector<detect::ObjectSample> samples;
-  for (const auto& directory : arguments.samples) {
-    auto more = detect::ReadSamples(directory);
-    samples.insert(samples.end(), std::make_move_iterator(more.begin()),
-                   std::make_move_iterator(more.end()));
+  const detect::ClassifierTraining training =
+      detect::TrainClassifier(arguments.samples, arguments.output, arguments.options);
+  std::printf("%s\n", detect::TrainingSummaryText(training, arguments.output).c_str());
+  if (arguments.validate.empty()) return;
+  const detect::ClassifierValidation validation =
+      detect::ValidateClassifier(training.classifier, detect::ReadSamples(arguments.validate));
+  std::printf("\nheld-out samples: %zu\n%-30s %10s %16s\n", validation.samples, "method",
+              "class acc.", "litter/natural acc.");
+  for (const detect::MethodAccuracy& m : validation.methods) {
+    std::printf("%-30s %10.3f %16.3f\n", detect::ClassifierMethodName(m.method), m.class_accuracy,
+                m.litter_natural_accuracy);
   }
-  detect::TrainingSummary summary;
-  const auto classifier = detect::LitterClassifier::Train(samples, arguments.options, &summary);
-  classifier.Save(arguments.output);
-  std::printf("wrote %s: %zu classes from %zu samples (training accuracy %.3f)\n",
-              arguments.output.c_str(), summary.samples_per_class.size(), samples.size(),
-              summary.training_accuracy);
-  for (const auto& [label, count] : summary.samples_per_class) {
-    std::printf("  %-16s %zu samples used\n", label.c_str(), count);
-  }
-  if (!arguments.validate.empty())
-    PrintValidation(classifier, detect::ReadSamples(arguments.validate));
 }
 
 }  // namespace
@@ -145,12 +64,12 @@ void RegisterTrainCommands(CLI::App& app, CliContext& context) {
       ->required()
       ->check(CLI::ExistingDirectory);
   command->add_option("-o,--output", samples->output, "Sample directory to write")->required();
-  command->add_option("--every", samples->options.every, "Process every n-th frame")
+  command->add_option("--every", samples->options.objects.every, "Process every n-th frame")
       ->capture_default_str();
-  command->add_option("--debug-frames", samples->debug_frames,
+  command->add_option("--debug-frames", samples->options.debug_frames,
                       "Write a segmentation picture of every processed frame here");
   command
-      ->add_option("--label-radius", samples->label_radius_m,
+      ->add_option("--label-radius", samples->options.label_radius_m,
                    "An object within this distance (m) of a truth object takes its class")
       ->capture_default_str();
   command->callback([samples, &context] {

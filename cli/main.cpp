@@ -40,6 +40,7 @@ int main(int argc, char** argv) {
   CliContext context;
   app.add_flag("-q,--quiet", context.quiet, "No progress output on stderr");
   littermap::cli::RegisterInfoCommand(app, context);
+  littermap::cli::RegisterConvertCommand(app, context);
   littermap::cli::RegisterImportCommands(app, context);
   littermap::cli::RegisterSimulateCommand(app, context);
   littermap::cli::RegisterCaptureCommand(app, context);

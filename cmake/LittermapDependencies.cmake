@@ -57,3 +57,9 @@ if(NOT TARGET yaml-cpp::yaml-cpp)
   add_library(yaml-cpp::yaml-cpp INTERFACE IMPORTED)
   target_link_libraries(yaml-cpp::yaml-cpp INTERFACE yaml-cpp)
 endif()
+
+# zstd and LZ4 (MCAP chunk compression, bag/mcap_compression.cpp): Debian 12 ships pkg-config
+# files for both, a CMake config for neither (liblz4) or an incomplete one (libzstd).
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)
+pkg_check_modules(LZ4 REQUIRED IMPORTED_TARGET liblz4)

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <string_view>
 
 namespace littermap {
@@ -15,6 +16,10 @@ struct Progress {
 };
 
 using ProgressCallback = std::function<void(const Progress&)>;
+
+// Something the user should know that does not stop the work (a damaged chunk read past, a
+// missing sensor mounting), passed on as it happens so it reaches the user in order.
+using WarningCallback = std::function<void(const std::string& warning)>;
 
 // A callback that does nothing, for callers that do not care.
 inline void ReportProgress(const ProgressCallback& callback, const Progress& progress) {

@@ -35,4 +35,7 @@ struct SiteFrame {
   }
 };
 
+// For people: "EPSG:N, origin E .. N .., rotation .. deg", or "local frame (not georeferenced)".
+std::string Describe(const SiteFrame& frame);
+
 }  // namespace littermap::db

@@ -2,6 +2,8 @@
 
 #include <proj.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <memory>
 
@@ -53,6 +55,20 @@ std::vector<SpatialRefSys> RequiredSpatialRefSys() {
       {"Undefined geographic SRS", 0, "NONE", 0, "undefined",
        "undefined geographic coordinate reference system"},
   };
+}
+
+std::optional<int> ParseEpsgCode(const std::string& text, const std::string& what) {
+  if (text.empty()) return std::nullopt;
+  std::string digits = text;
+  std::string upper = text;
+  std::transform(upper.begin(), upper.end(), upper.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  if (upper.rfind("EPSG:", 0) == 0) digits = text.substr(5);
+  const bool numeric = !digits.empty() && digits.size() < 10 &&
+                       std::all_of(digits.begin(), digits.end(),
+                                   [](unsigned char c) { return std::isdigit(c) != 0; });
+  if (!numeric) throw UsageError(what + " " + text + ": expected EPSG:N, e.g. EPSG:32633");
+  return std::stoi(digits);
 }
 
 SpatialRefSys EpsgSpatialRefSys(int epsg_code) {

@@ -4,6 +4,7 @@
 // a site without georeference.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,10 @@ constexpr std::int32_t kLocalSiteSrsId = 100000;
 
 // WGS 84 (4326), undefined cartesian (-1) and undefined geographic (0).
 std::vector<SpatialRefSys> RequiredSpatialRefSys();
+
+// The EPSG code of a CRS as people write it: "EPSG:32633", "epsg:32633" or "32633"; none for an
+// empty text. Throws UsageError naming `what` (the option that gave it) for any other text.
+std::optional<int> ParseEpsgCode(const std::string& text, const std::string& what);
 
 // A projected CRS in metres from the EPSG registry; throws UsageError naming the code when PROJ
 // does not know it or it is not a projected CRS with metre axes (site coordinates are metres).

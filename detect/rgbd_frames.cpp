@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "bag/bag_reader.hpp"
+#include "bag/camera_image.hpp"
 #include "bag/camera_setup.hpp"
 #include "bag/image_codec.hpp"
 #include "bag/message_header.hpp"
@@ -31,6 +32,7 @@ void RgbdFrameReader::ForEach(std::size_t every,
                               const std::function<void(const RgbdFrame&)>& visit) const {
   if (every == 0) throw UsageError("detect: --every must be >= 1");
   bag::BagReader reader(bag_);
+  reader.SetStampSource(options_.stamps);
   reader.SetTopicFilter({options_.topics.colour, options_.topics.depth, options_.topics.imu});
   const auto max_imu_age = static_cast<TimestampNs>(options_.max_imu_age_s * 1e9);
   bag::RgbdPairing pairing(options_.max_pair_gap_s);
@@ -54,7 +56,7 @@ void RgbdFrameReader::ForEach(std::size_t every,
         continue;
       }
     }
-    auto image = bag::DecodeBagMessage<msg::CompressedImage>(reader, *raw);
+    auto image = bag::DecodeCameraImage(reader, *raw);
     const std::optional<bag::CompressedRgbd> pair =
         is_colour ? pairing.AddColour(std::move(image)) : pairing.AddDepth(std::move(image));
     if (!pair) continue;

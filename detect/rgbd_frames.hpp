@@ -12,6 +12,7 @@
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
 
+#include "bag/header_stamps.hpp"
 #include "bag/topics.hpp"
 #include "core/pose3.hpp"
 #include "core/time.hpp"
@@ -20,7 +21,8 @@
 namespace littermap::detect {
 
 struct RgbdFrameOptions {
-  bag::RunTopics topics;         // colour, depth, camera info, tf_static, imu, camera frame
+  bag::RunTopics topics;  // colour, depth, camera info, tf_static, imu, camera frame
+  bag::StampSource stamps = bag::StampSource::kHeader;  // bag/header_stamps.hpp
   double max_pair_gap_s = 0.02;  // colour and depth of one frame, stamp difference
   double max_imu_age_s = 0.1;    // older tilt counts as unknown (the cloud is then not levelled)
 };

@@ -230,6 +230,7 @@ DetectionMetrics EvaluateDetections(const std::vector<DetectedItem>& detected,
   }
   DetectionMetrics metrics;
   metrics.hidden_truth = hidden.size();
+  metrics.visibility_filtered = visible_pixels.has_value();
   ScoreLitter(detected, shown, hidden, options.match_radius_m, metrics);
   Confuse(detected, shown, hidden, options.match_radius_m, metrics);
   return metrics;

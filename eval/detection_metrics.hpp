@@ -77,6 +77,7 @@ struct DetectionMetrics {
   std::size_t false_negatives = 0;
   std::size_t ignored_detections = 0;  // predicted litter at truth litter the filter hid
   std::size_t hidden_truth = 0;        // truth objects (litter and natural) the filter dropped
+  bool visibility_filtered = false;    // truth was filtered by visible pixels
   double precision = 1.0;
   double recall = 1.0;
   double f1 = 1.0;

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "eval/text_format.hpp"
 
 namespace littermap::eval {
 
@@ -83,6 +84,23 @@ std::string ToJson(const std::vector<std::string>& names, const std::vector<MapS
                                     {"occupied_cells", maps[i].occupied_cells}});
   }
   return json.dump(2);
+}
+
+std::string ToText(const std::vector<std::string>& names, const std::vector<MapSharpness>& maps,
+                   const MapSharpnessOptions& options) {
+  std::string text;
+  AppendFormat(text, "occupied %.0f cm cells of the echoes within %.1f m (fewer: sharper map)\n",
+               100 * options.cell_size_m, options.max_range_m);
+  AppendFormat(text, "%12s %9s %12s %12s  %s\n", "cells", "vs first", "echoes", "scans",
+               "trajectory");
+  for (std::size_t i = 0; i < maps.size(); ++i) {
+    AppendFormat(text, "%12zu %8.1f%% %12zu %5zu/%-6zu  %s\n", maps[i].occupied_cells,
+                 100.0 * static_cast<double>(maps[i].occupied_cells) /
+                     static_cast<double>(maps.front().occupied_cells),
+                 maps[i].echoes_drawn, maps[i].scans_drawn, maps[i].scans, names.at(i).c_str());
+  }
+  text.pop_back();  // the caller ends the last line, as after ToJson
+  return text;
 }
 
 }  // namespace littermap::eval

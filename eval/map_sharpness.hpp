@@ -44,5 +44,9 @@ MapSharpness MeasureMapSharpness(const std::vector<LaserScan>& scans,
 // and per trajectory (named by `names`, one per result) its counts.
 std::string ToJson(const std::vector<std::string>& names, const std::vector<MapSharpness>& maps,
                    const MapSharpnessOptions& options);
+// The same as a table, one line per trajectory: occupied cells, their share of the first
+// trajectory's, echoes and scans drawn.
+std::string ToText(const std::vector<std::string>& names, const std::vector<MapSharpness>& maps,
+                   const MapSharpnessOptions& options);
 
 }  // namespace littermap::eval

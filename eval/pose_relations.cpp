@@ -9,7 +9,12 @@
 #include <string>
 #include <string_view>
 
+#include <nlohmann/json.hpp>
+
+#include "bag/tum_trajectory.hpp"
 #include "core/error.hpp"
+#include "core/stamped_pose.hpp"
+#include "eval/text_format.hpp"
 
 namespace littermap::eval {
 namespace {
@@ -44,6 +49,34 @@ void ForEachRow(const std::filesystem::path& path, Row row) {
     if (!ParseNumbers(line, &numbers)) throw BadInputError(where + ": a field is not a number");
     row(numbers, where);
   }
+}
+
+nlohmann::ordered_json StatisticsJson(const ErrorStatistics& s) {
+  return {{"mean", s.mean}, {"stddev", s.stddev}, {"max", s.max}};
+}
+
+nlohmann::ordered_json ErrorsJson(const RelationErrors& e) {
+  return {{"trans_m", StatisticsJson(e.translation_m)},
+          {"trans_sq_m2", StatisticsJson(e.translation_sq_m2)},
+          {"rot_deg", StatisticsJson(e.rotation_deg)},
+          {"rot_sq_deg2", StatisticsJson(e.rotation_sq_deg2)},
+          {"trans_median_m", e.translation_median_m},
+          {"over_large_error", e.over_large_error}};
+}
+
+void AppendErrors(std::string& text, const char* name, const RelationErrors& e,
+                  double large_error_m) {
+  AppendFormat(text, "%s\n", name);
+  AppendFormat(text,
+               "  translation      %.4f +- %.4f m (median %.4f m, max %.3f m, %zu over %.2f m)\n",
+               e.translation_m.mean, e.translation_m.stddev, e.translation_median_m,
+               e.translation_m.max, e.over_large_error, large_error_m);
+  AppendFormat(text, "  translation^2    %.5f +- %.5f m^2\n", e.translation_sq_m2.mean,
+               e.translation_sq_m2.stddev);
+  AppendFormat(text, "  rotation         %.3f +- %.3f deg (max %.2f deg)\n", e.rotation_deg.mean,
+               e.rotation_deg.stddev, e.rotation_deg.max);
+  AppendFormat(text, "  rotation^2       %.3f +- %.3f deg^2\n", e.rotation_sq_deg2.mean,
+               e.rotation_sq_deg2.stddev);
 }
 
 ErrorStatistics Statistics(const std::vector<double>& values) {
@@ -180,6 +213,43 @@ PoseRelationMetrics EvaluatePoseRelations(const std::vector<PlanarPose>& traject
   metrics.component = component.Summarise(options.large_error_m);
   metrics.cartographer = cartographer.Summarise(options.large_error_m);
   return metrics;
+}
+
+PoseRelationMetrics EvaluatePoseRelations(const std::filesystem::path& trajectory,
+                                          const std::vector<double>& scan_stamps_s,
+                                          const std::vector<PoseRelation>& relations,
+                                          const PoseRelationOptions& options) {
+  std::vector<PlanarPose> poses;
+  for (const StampedPose& pose : bag::ReadTumTrajectory(trajectory)) {
+    poses.push_back(PlanarPoseOf(pose));
+  }
+  try {
+    return EvaluatePoseRelations(poses, scan_stamps_s, relations, options);
+  } catch (const BadInputError& error) {
+    throw BadInputError(trajectory.string() + ": " + error.what());
+  }
+}
+
+std::string ToJson(const PoseRelationMetrics& metrics) {
+  nlohmann::ordered_json json;
+  json["relations"] = metrics.relations;
+  json["used"] = metrics.used;
+  json["unmatched"] = metrics.unmatched;
+  json["metric_evaluator"] = ErrorsJson(metrics.component);
+  json["cartographer"] = ErrorsJson(metrics.cartographer);
+  return json.dump(2);
+}
+
+std::string ToText(const PoseRelationMetrics& metrics, const PoseRelationOptions& options) {
+  std::string text;
+  AppendFormat(text, "relations          %zu used of %zu (%zu with an end at no scan)\n",
+               metrics.used, metrics.relations, metrics.unmatched);
+  AppendErrors(text, "metricEvaluator (component difference)", metrics.component,
+               options.large_error_m);
+  AppendErrors(text, "Cartographer (est * inv(relation))", metrics.cartographer,
+               options.large_error_m);
+  text.pop_back();  // the caller ends the last line, as after ToJson
+  return text;
 }
 
 }  // namespace littermap::eval

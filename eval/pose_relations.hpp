@@ -15,6 +15,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "core/planar_pose.hpp"
@@ -74,5 +75,18 @@ PoseRelationMetrics EvaluatePoseRelations(const std::vector<PlanarPose>& traject
                                           const std::vector<double>& scan_stamps_s,
                                           const std::vector<PoseRelation>& relations,
                                           const PoseRelationOptions& options);
+// The same for a TUM trajectory file (the yaw of each pose); BadInputErrors of the evaluation
+// name the file.
+PoseRelationMetrics EvaluatePoseRelations(const std::filesystem::path& trajectory,
+                                          const std::vector<double>& scan_stamps_s,
+                                          const std::vector<PoseRelation>& relations,
+                                          const PoseRelationOptions& options);
+
+// The metrics as a JSON object (2-space indent): relations, used, unmatched, and per definition
+// (metric_evaluator, cartographer) trans_m, trans_sq_m2, rot_deg, rot_sq_deg2 (mean, stddev,
+// max), trans_median_m and over_large_error.
+std::string ToJson(const PoseRelationMetrics& metrics);
+// The same as text, a block per definition.
+std::string ToText(const PoseRelationMetrics& metrics, const PoseRelationOptions& options);
 
 }  // namespace littermap::eval

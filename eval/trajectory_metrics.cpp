@@ -12,8 +12,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bag/tum_trajectory.hpp"
 #include "core/error.hpp"
 #include "core/pose3.hpp"
+#include "eval/text_format.hpp"
 
 namespace littermap::eval {
 namespace {
@@ -194,6 +196,13 @@ std::vector<std::optional<PlanarPose>> PlanarPosesAt(const std::vector<StampedPo
   return poses;
 }
 
+TrajectoryMetrics EvaluateTrajectory(const std::filesystem::path& estimate,
+                                     const std::filesystem::path& reference,
+                                     const TrajectoryMetricsOptions& options) {
+  return EvaluateTrajectory(bag::ReadTumTrajectory(estimate), bag::ReadTumTrajectory(reference),
+                            options);
+}
+
 std::string ToJson(const TrajectoryMetrics& metrics) {
   nlohmann::ordered_json json;
   json["ate_rmse_m"] = metrics.ate_rmse_m;
@@ -205,6 +214,19 @@ std::string ToJson(const TrajectoryMetrics& metrics) {
   json["associated_poses"] = metrics.associated_poses;
   json["rpe_pairs"] = metrics.rpe_pairs;
   return json.dump(2);
+}
+
+std::string ToText(const TrajectoryMetrics& metrics, const TrajectoryMetricsOptions& options) {
+  std::string text;
+  AppendFormat(text, "associated poses   %zu\n", metrics.associated_poses);
+  AppendFormat(text, "ATE RMSE           %.4f m (mean %.4f m, max %.4f m)\n", metrics.ate_rmse_m,
+               metrics.ate_mean_m, metrics.ate_max_m);
+  AppendFormat(text, "RPE translation    %.4f m mean, %.4f m RMSE over %zu pairs %.2f m apart\n",
+               metrics.rpe_trans_mean_m, metrics.rpe_trans_rmse_m, metrics.rpe_pairs,
+               options.rpe_delta_m);
+  AppendFormat(text, "RPE rotation       %.3f deg mean\n", metrics.rpe_rot_mean_deg);
+  text.pop_back();  // the caller ends the last line, as after ToJson
+  return text;
 }
 
 }  // namespace littermap::eval

@@ -11,7 +11,9 @@
 //   rotation angle, exactly as evaluate_rpe.py composes it. Pairs are chosen by distance along the
 //   estimate, as evaluate_rpe.py and evo (by default) do, not along the reference.
 
+#include <filesystem>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -57,9 +59,17 @@ std::vector<std::optional<PlanarPose>> PlanarPosesAt(const std::vector<StampedPo
 TrajectoryMetrics EvaluateTrajectory(const std::vector<StampedPose>& estimate,
                                      const std::vector<StampedPose>& reference,
                                      const TrajectoryMetricsOptions& options);
+// The same for two TUM trajectory files. Throws BadInputError naming a file that cannot be read.
+TrajectoryMetrics EvaluateTrajectory(const std::filesystem::path& estimate,
+                                     const std::filesystem::path& reference,
+                                     const TrajectoryMetricsOptions& options);
 
 // The metrics as a JSON object (2-space indent): ate_rmse_m, ate_mean_m, ate_max_m,
 // rpe_trans_mean_m, rpe_trans_rmse_m, rpe_rot_mean_deg, associated_poses, rpe_pairs.
 std::string ToJson(const TrajectoryMetrics& metrics);
+
+// The metrics as text lines: associated poses, ATE (RMSE, mean, max), RPE (translation mean and
+// RMSE over the pairs options.rpe_delta_m apart, rotation mean).
+std::string ToText(const TrajectoryMetrics& metrics, const TrajectoryMetricsOptions& options);
 
 }  // namespace littermap::eval

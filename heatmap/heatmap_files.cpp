@@ -1,5 +1,6 @@
 #include "heatmap/heatmap_files.hpp"
 
+#include <cstdio>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -75,6 +76,23 @@ HeatmapFilesResult WriteHeatmapFiles(db::SiteDatabase& site, const std::filesyst
   result.surveyed_area_m2 = map.density.surveyed_area_m2;
   result.max_density_per_100m2 = static_cast<double>(map.density.max_density);
   return result;
+}
+
+HeatmapFilesResult WriteHeatmapFiles(const std::filesystem::path& site_file,
+                                     const std::filesystem::path& dir,
+                                     HeatmapFilesOptions options) {
+  db::SiteDatabase site = db::SiteDatabase::Open(site_file);
+  return WriteHeatmapFiles(site, dir, std::move(options));
+}
+
+std::string HeatmapSummary(const HeatmapFilesResult& result, const std::filesystem::path& dir) {
+  char figures[256];
+  std::snprintf(figures, sizeof figures,
+                "%zu runs, %zu items (%zu detections), %.0f m2 surveyed; peak density %.2f items "
+                "per 100 m2 per survey; %zu hotspots; written to ",
+                result.runs, result.items, result.detections, result.surveyed_area_m2,
+                result.max_density_per_100m2, result.hotspots);
+  return figures + dir.string();
 }
 
 }  // namespace littermap::heatmap

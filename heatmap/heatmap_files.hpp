@@ -38,5 +38,11 @@ struct HeatmapFilesResult {
 // Creates `dir` if needed. Throws BadInputError when no run matches the selection.
 HeatmapFilesResult WriteHeatmapFiles(db::SiteDatabase& site, const std::filesystem::path& dir,
                                      HeatmapFilesOptions options);
+// The same for the site database in `site_file`; throws BadInputError when it is not one.
+HeatmapFilesResult WriteHeatmapFiles(const std::filesystem::path& site_file,
+                                     const std::filesystem::path& dir, HeatmapFilesOptions options);
+
+// What was written, in one line: runs, items, area, peak density, hotspots and `dir`.
+std::string HeatmapSummary(const HeatmapFilesResult& result, const std::filesystem::path& dir);
 
 }  // namespace littermap::heatmap

@@ -8,11 +8,13 @@
 #include <utility>
 
 #include "bag/bag_reader.hpp"
+#include "bag/camera_image.hpp"
 #include "bag/camera_setup.hpp"
 #include "bag/image_codec.hpp"
 #include "bag/message_header.hpp"
 #include "bag/message_stream.hpp"
 #include "bag/rgbd_pairing.hpp"
+#include "bag/transform_tree.hpp"
 #include "core/error.hpp"
 #include "core/pose3.hpp"
 #include "reconstruct/odometry_history.hpp"
@@ -72,20 +74,28 @@ PlanarPose ReadLaserExtrinsic(const std::filesystem::path& bag,
                               std::vector<std::string>* warnings, double* height_m) {
   if (height_m != nullptr) *height_m = 0;
   bag::BagReader reader(bag);
-  reader.SetTopicFilter({options.topics.tf_static});
-  bag::MessageStream stream(reader);
-  while (auto message = stream.Next()) {
-    const auto* tf = std::get_if<msg::TFMessage>(&message->message);
-    if (tf == nullptr) continue;
-    for (const auto& transform : tf->transforms) {
-      if (transform.child_frame_id != frames::kLaser) continue;
-      if (height_m != nullptr) *height_m = transform.transform.translation.z;
-      return {transform.transform.translation.x, transform.transform.translation.y,
-              YawOf(bag::ToEigen(transform.transform.rotation))};
+  reader.SetStampSource(options.stamps);
+  const bag::TransformTree tree = bag::ReadTransformTree(reader, options.topics);
+  // The laser's frame is "laser", or else the one its scans name.
+  std::string frame = frames::kLaser;
+  auto transform = tree.LookupTransform(frames::kBase, frame);
+  if (!transform && reader.info().FindTopic(options.topics.scan) != nullptr) {
+    reader.SetTopicFilter({options.topics.scan});
+    bag::MessageStream stream(reader);
+    const auto first = stream.Next();
+    const auto* scan = first ? std::get_if<msg::LaserScan>(&first->message) : nullptr;
+    if (scan != nullptr && !scan->header.frame_id.empty()) {
+      frame += " (or " + scan->header.frame_id + ")";
+      transform = tree.LookupTransform(frames::kBase, scan->header.frame_id);
     }
   }
-  warnings->push_back(bag.string() + ": no " + std::string(frames::kBase) + " -> " +
-                      frames::kLaser + " transform on " + options.topics.tf_static +
+  if (transform) {
+    if (height_m != nullptr) *height_m = transform->translation.z;
+    return {transform->translation.x, transform->translation.y,
+            YawOf(bag::ToEigen(transform->rotation))};
+  }
+  warnings->push_back(bag.string() + ": no " + std::string(frames::kBase) + " -> " + frame +
+                      " transform on " + options.topics.tf_static + " or /tf" +
                       "; assuming the laser sits at base_link");
   return {};
 }
@@ -96,6 +106,7 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
   options.Validate();
   const auto start = std::chrono::steady_clock::now();
   bag::BagReader reader(bag);
+  reader.SetStampSource(options.stamps);
   const std::uint64_t total = reader.RequireTopic(options.topics.scan, "laser scan").message_count;
   std::vector<std::string> wanted = {options.topics.scan, options.topics.odometry,
                                      options.topics.imu};
@@ -145,7 +156,7 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
       }
       continue;
     }
-    if (auto* image = std::get_if<msg::CompressedImage>(&message->message)) {
+    if (auto image = bag::TakeCameraImage(message->message)) {
       std::optional<bag::CompressedRgbd> frame = message->topic->name == options.topics.colour
                                                      ? pairing.AddColour(std::move(*image))
                                                      : pairing.AddDepth(std::move(*image));
@@ -195,6 +206,7 @@ ReconstructionResult ReconstructBagVisually(const std::filesystem::path& bag,
   options.Validate();
   const auto start = std::chrono::steady_clock::now();
   bag::BagReader reader(bag);
+  reader.SetStampSource(options.stamps);
   const bag::TopicInfo* colour_info = reader.info().FindTopic(options.topics.colour);
   if (colour_info == nullptr) {
     throw BadInputError(bag.string() + ": no laser scan topic " + options.topics.scan +
@@ -212,8 +224,8 @@ ReconstructionResult ReconstructBagVisually(const std::filesystem::path& bag,
   std::uint64_t done = 0;
   const std::string task = "visual odometry on " + bag.filename().string();
   while (auto message = stream.Next()) {
-    auto* image = std::get_if<msg::CompressedImage>(&message->message);
-    if (image == nullptr) continue;
+    auto image = bag::TakeCameraImage(message->message);
+    if (!image) continue;
     const bool colour = message->topic->name == options.topics.colour;
     if (colour && ++done % 20 == 0) ReportProgress(progress, {task, done, total});
     std::optional<bag::CompressedRgbd> frame =

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "bag/header_stamps.hpp"
 #include "bag/topics.hpp"
 #include "core/progress.hpp"
 #include "reconstruct/gyro_odometry.hpp"
@@ -20,6 +21,7 @@ struct ReconstructionOptions {
   // The IMU gives tilt for the ground-hit filter and yaw rate for the odometry's heading; the
   // RGB-D camera serves routine 3 when the bag has its topics and `rgbd` is set.
   bag::RunTopics topics;
+  bag::StampSource stamps = bag::StampSource::kHeader;  // bag/header_stamps.hpp
   bool gyro_heading = true;  // turn the odometry by the IMU's yaw rate (GyroOdometry)
   GyroOdometryOptions gyro;
   bool rgbd = true;

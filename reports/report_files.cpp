@@ -1,11 +1,21 @@
 #include "reports/report_files.hpp"
 
+#include <ctime>
 #include <system_error>
 
 #include "core/error.hpp"
+#include "core/time.hpp"
+#include "littermap_version.hpp"
 #include "reports/report_json.hpp"
 
 namespace littermap::reports {
+
+ReportFilesOptions StampedReportFilesOptions() {
+  ReportFilesOptions options;
+  options.html.generated_utc = FormatUtc(static_cast<double>(std::time(nullptr)));
+  options.html.version = LITTERMAP_VERSION;
+  return options;
+}
 
 SiteReport WriteReportFiles(db::SiteDatabase& site, const std::filesystem::path& dir,
                             const ReportFilesOptions& options) {
@@ -17,6 +27,19 @@ SiteReport WriteReportFiles(db::SiteDatabase& site, const std::filesystem::path&
   WriteHtmlReport(dir / "index.html", report, figure, options.html);
   WriteReportJson(dir / "report.json", report, options.html.generated_utc);
   return report;
+}
+
+SiteReport WriteReportFiles(const std::filesystem::path& site_file,
+                            const std::filesystem::path& dir, const ReportFilesOptions& options) {
+  db::SiteDatabase site = db::SiteDatabase::Open(site_file);
+  return WriteReportFiles(site, dir, options);
+}
+
+std::string ReportSummary(const SiteReport& report, const std::filesystem::path& dir) {
+  const std::size_t runs = report.runs.size();
+  return "Report of " + report.site_name + ": " + std::to_string(runs) +
+         (runs == 1 ? " run, " : " runs, ") + std::to_string(report.items) + " litter items, " +
+         std::to_string(report.hotspots.size()) + " hotspots\n" + (dir / "index.html").string();
 }
 
 }  // namespace littermap::reports

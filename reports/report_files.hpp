@@ -3,6 +3,7 @@
 // set of figures.
 
 #include <filesystem>
+#include <string>
 
 #include "reports/html_report.hpp"
 #include "reports/site_map_figure.hpp"
@@ -16,9 +17,19 @@ struct ReportFilesOptions {
   HtmlReportOptions html;  // generated_utc doubles as report.json's
 };
 
+// The default figures, generated now, stamped with this littermap's version.
+ReportFilesOptions StampedReportFilesOptions();
+
 // Creates `dir` if needed. Returns the figures written. Throws BadInputError when no run falls
 // in the period, UsageError when the files cannot be written.
 SiteReport WriteReportFiles(db::SiteDatabase& site, const std::filesystem::path& dir,
                             const ReportFilesOptions& options);
+// The same for the site database in `site_file`; throws BadInputError when it is not one.
+SiteReport WriteReportFiles(const std::filesystem::path& site_file,
+                            const std::filesystem::path& dir, const ReportFilesOptions& options);
+
+// What was written: the site, its runs, items and hotspots, and DIR/index.html on a line of its
+// own.
+std::string ReportSummary(const SiteReport& report, const std::filesystem::path& dir);
 
 }  // namespace littermap::reports

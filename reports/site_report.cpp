@@ -7,10 +7,9 @@
 #include <unordered_map>
 #include <utility>
 
-#include <nlohmann/json.hpp>
-
 #include "core/error.hpp"
 #include "reports/html_text.hpp"
+#include "run/quality_file.hpp"
 
 namespace littermap::reports {
 namespace {
@@ -22,33 +21,26 @@ std::vector<db::RunRecord> RunsByStartTime(db::SiteDatabase& site) {
   return runs;
 }
 
-int IntOf(const nlohmann::json& json, const char* key) {
-  const auto it = json.find(key);
-  return it != json.end() && it->is_number() ? it->get<int>() : 0;
-}
-
 // Reads reconstruct's quality.json as stored; its warnings go to `warnings`.
 RunQuality ParseQuality(const db::RunRecord& run, std::vector<std::string>& warnings) {
   RunQuality quality;
   if (run.reconstruction_quality.empty()) return quality;
-  const nlohmann::json json = nlohmann::json::parse(run.reconstruction_quality, nullptr, false);
-  if (!json.is_object()) {
+  const std::optional<run::ReconstructionQuality> record =
+      run::QualityFromJson(run.reconstruction_quality);
+  if (!record) {
     warnings.push_back("its reconstruction quality record is unreadable");
     return quality;
   }
   quality.known = true;
-  quality.scans = IntOf(json, "scans");
-  quality.key_frames = IntOf(json, "key_frames");
-  quality.loop_closures_found = IntOf(json, "loop_closures_found");
-  quality.loop_closures_accepted = IntOf(json, "loop_closures_accepted");
-  if (const auto routines = json.find("routines"); routines != json.end() && routines->is_object())
-    for (const auto& [name, count] : routines->items()) {
-      if (count.is_number()) quality.routines[name] = count.get<int>();
-    }
-  if (const auto list = json.find("warnings"); list != json.end() && list->is_array()) {
-    for (const auto& warning : *list) {
-      if (warning.is_string()) warnings.push_back("reconstruction: " + warning.get<std::string>());
-    }
+  quality.scans = static_cast<int>(record->scans);
+  quality.key_frames = static_cast<int>(record->key_frames);
+  quality.loop_closures_found = static_cast<int>(record->loop_closures_found);
+  quality.loop_closures_accepted = static_cast<int>(record->loop_closures_accepted);
+  for (const auto& [name, count] : record->routines) {
+    quality.routines[name] = static_cast<int>(count);
+  }
+  for (const std::string& warning : record->warnings) {
+    warnings.push_back("reconstruction: " + warning);
   }
   return quality;
 }

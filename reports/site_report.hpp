@@ -33,7 +33,7 @@ struct SiteReportOptions {
 
 using ClassCounts = std::map<std::string, int>;
 
-// Reconstruction quality of a run, from reconstruct's quality.json.
+// Reconstruction quality of a run, from reconstruct's quality.json (run/quality_file.hpp).
 struct RunQuality {
   bool known = false;                   // the run came with a quality.json
   std::map<std::string, int> routines;  // scans per tracking routine

@@ -1,10 +1,14 @@
 #include "run/detect_run.hpp"
 
+#include <algorithm>
+#include <cstdio>
+
 #include "bag/tum_trajectory.hpp"
 #include "detect/litter_classifier.hpp"
 #include "run/detections_file.hpp"
 #include "run/items_file.hpp"
 #include "run/run_files.hpp"
+#include "run/sensor_roles_file.hpp"
 
 namespace littermap::run {
 
@@ -22,8 +26,12 @@ DetectRunResult DetectRun(const std::filesystem::path& bag, const std::filesyste
   const RunFiles output(result.output_dir);
   DetectionsCsvWriter detections(output.detections());
   detect::ItemFusion fusion(options.fusion, classifier.classes().size());
+  detect::RunObjectsOptions objects = options.objects;
+  const bag::SensorRoles roles = ResolveBagRoles(bag, options.topic_roles, objects.frames.topics);
+  objects.frames.topics = roles.topics;
+  WriteSensorRoles(output.sensor_roles(), roles);
   result.objects = detect::ForEachRunObject(
-      bag, trajectory, options.objects, progress,
+      bag, trajectory, objects, progress,
       [&](const detect::PlacedObject& placed) {
         const detect::Classification c = classifier.Classify(placed.sample);
         long item = -1;
@@ -40,7 +48,34 @@ DetectRunResult DetectRun(const std::filesystem::path& bag, const std::filesyste
   const ItemsWritten items = WriteItemsCsv(output.items(), fusion.Items(), classifier);
   result.litter_items = items.litter;
   result.natural_objects = items.natural;
+  if (result.objects.frames_without_pose > 0) {
+    result.warnings.push_back(std::to_string(result.objects.frames_without_pose) +
+                              " frames lay outside the trajectory and were skipped");
+  }
   return result;
+}
+
+std::string DetectSummary(const DetectRunResult& result, int min_views) {
+  char figures[256];
+  std::snprintf(figures, sizeof figures,
+                "%zu frames, %zu objects, %zu litter items and %zu natural objects seen in >= %d "
+                "views",
+                result.objects.frames, result.objects.objects, result.litter_items,
+                result.natural_objects, min_views);
+  return "wrote " + result.output_dir.string() + ": " + figures + "\n" +
+         SegmentationTimeLine(result.objects);
+}
+
+std::string SegmentationTimeLine(const detect::RunObjectsResult& result) {
+  const double n = static_cast<double>(std::max<std::size_t>(1, result.frames));
+  const auto& t = result.time;
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "segmentation %.1f ms/frame (cloud+normals %.1f, components %.1f, ground %.1f, "
+                "texture+graph cut %.1f, objects %.1f)",
+                t.total_ms() / n, t.cloud_ms / n, t.components_ms / n, t.ground_ms / n,
+                t.texture_ms / n, t.objects_ms / n);
+  return line;
 }
 
 }  // namespace littermap::run

@@ -7,6 +7,9 @@
 #include <cstddef>
 #include <filesystem>
 #include <functional>
+#include <map>
+#include <string>
+#include <vector>
 
 #include "core/progress.hpp"
 #include "detect/item_fusion.hpp"
@@ -20,6 +23,9 @@ struct DetectRunOptions {
   std::filesystem::path output_dir;  // where to write; empty: the run directory
   detect::RunObjectsOptions objects;
   detect::FusionOptions fusion;
+  // Sensor role -> topic (--topic ROLE=NAME); the other roles are found in the bag by
+  // bag/sensor_roles.hpp, starting from objects.frames.topics.
+  std::map<std::string, std::string> topic_roles;
 };
 
 struct DetectRunResult {
@@ -27,6 +33,7 @@ struct DetectRunResult {
   detect::RunObjectsResult objects;  // frames, objects, frames without a pose, timings
   std::size_t litter_items = 0;      // in items.csv
   std::size_t natural_objects = 0;
+  std::vector<std::string> warnings;  // for the user's attention
 };
 
 // `on_frame` (optional) sees each processed frame's segmentation. Throws BadInputError for a bag,
@@ -36,5 +43,12 @@ DetectRunResult DetectRun(
     const DetectRunOptions& options, const ProgressCallback& progress = {},
     const std::function<void(const detect::RgbdFrame&, const detect::FrameSegmentation&)>&
         on_frame = {});
+
+// What the run came to: "wrote DIR: N frames, ... seen in >= min_views views" and the
+// segmentation's time line.
+std::string DetectSummary(const DetectRunResult& result, int min_views);
+
+// Milliseconds per frame of the segmentation, in total and by step.
+std::string SegmentationTimeLine(const detect::RunObjectsResult& result);
 
 }  // namespace littermap::run

@@ -1,10 +1,14 @@
 #include "run/reconstruct_run.hpp"
 
+#include <cstdio>
 #include <memory>
 
+#include "reconstruct/options_file.hpp"
 #include "reconstruct/rgbd_tracker.hpp"
 #include "reconstruct/slam_pipeline.hpp"
+#include "run/run_files.hpp"
 #include "run/run_writer.hpp"
+#include "run/sensor_roles_file.hpp"
 
 namespace littermap::run {
 namespace {
@@ -15,6 +19,7 @@ ReconstructRunResult ReconstructVisually(const std::filesystem::path& bag,
                                          const ProgressCallback& progress) {
   std::vector<reconstruct::VisualFrame> frames;
   ReconstructRunResult run;
+  run.run_dir = run_dir;
   run.visual_odometry = true;
   reconstruct::ReconstructionResult result =
       reconstruct::ReconstructBagVisually(bag, options, &frames, &run.visual, progress);
@@ -56,11 +61,19 @@ void AddQualityWarnings(const reconstruct::SlamQuality& quality,
 
 ReconstructRunResult ReconstructRun(const std::filesystem::path& bag,
                                     const std::filesystem::path& run_dir,
-                                    reconstruct::ReconstructionOptions options,
+                                    const ReconstructRunOptions& run_options,
                                     const ProgressCallback& progress) {
+  reconstruct::ReconstructionOptions options = run_options.reconstruction;
+  if (!run_options.options_file.empty()) {
+    reconstruct::ApplyOptionsFile(run_options.options_file, &options);
+  }
+  const bag::SensorRoles roles = ResolveBagRoles(bag, run_options.topic_roles, options.topics);
+  options.topics = roles.topics;
   options.Validate();
   if (!reconstruct::HasLaser(bag, options)) {
-    return ReconstructVisually(bag, run_dir, options, progress);
+    ReconstructRunResult run = ReconstructVisually(bag, run_dir, options, progress);
+    WriteSensorRoles(RunFiles(run_dir).sensor_roles(), roles);
+    return run;
   }
   std::vector<std::string> warnings;
   double laser_height_m = 0;
@@ -77,7 +90,9 @@ ReconstructRunResult ReconstructRun(const std::filesystem::path& bag,
   const reconstruct::SlamQuality& quality = pipeline.quality();
   AddQualityWarnings(quality, &result.warnings);
   WriteRun(run_dir, pipeline, result, rgbd.get());
+  WriteSensorRoles(RunFiles(run_dir).sensor_roles(), roles);
   ReconstructRunResult run;
+  run.run_dir = run_dir;
   run.warnings = result.warnings;
   run.run_time_s = result.run_time_s;
   run.scans_per_s = result.scans_per_s;
@@ -87,6 +102,23 @@ ReconstructRunResult ReconstructRun(const std::filesystem::path& bag,
   run.loops_rejected = quality.loops_rejected_match + quality.loops_rejected_disagreement +
                        quality.loops_rejected_after_optimisation;
   return run;
+}
+
+std::string ReconstructSummary(const ReconstructRunResult& result) {
+  char figures[256];
+  if (result.visual_odometry) {
+    std::snprintf(figures, sizeof figures,
+                  "%zu of %zu frames tracked, %zu key frames, %zu segments, %.2f s (%.0f frames/s)",
+                  result.visual.tracked, result.visual.frames, result.visual.key_frames,
+                  result.visual.segments, result.run_time_s, result.scans_per_s);
+  } else {
+    std::snprintf(figures, sizeof figures,
+                  "%zu poses, %zu key frames, loops %zu accepted / %zu rejected, %.2f s "
+                  "(%.0f scans/s)",
+                  result.poses, result.key_frames, result.loops_accepted, result.loops_rejected,
+                  result.run_time_s, result.scans_per_s);
+  }
+  return "wrote " + result.run_dir.string() + ": " + figures;
 }
 
 }  // namespace littermap::run

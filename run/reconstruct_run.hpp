@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -14,7 +15,18 @@
 
 namespace littermap::run {
 
+struct ReconstructRunOptions {
+  reconstruct::ReconstructionOptions reconstruction;
+  // A YAML file of tuning options applied over `reconstruction` (reconstruct/options_file.hpp);
+  // empty: none.
+  std::filesystem::path options_file;
+  // Sensor role -> topic (--topic ROLE=NAME); the other roles are found in the bag by
+  // bag/sensor_roles.hpp, starting from reconstruction.topics.
+  std::map<std::string, std::string> topic_roles;
+};
+
 struct ReconstructRunResult {
+  std::filesystem::path run_dir;
   bool visual_odometry = false;  // the bag had no laser scans
   std::vector<std::string> warnings;
   double run_time_s = 0;
@@ -28,11 +40,16 @@ struct ReconstructRunResult {
   reconstruct::VisualOdometryStats visual;
 };
 
-// Validates the options, reconstructs and writes the run directory (created if needed).
-// Throws BadInputError for a bag at fault, UsageError for a run directory that cannot be written.
+// Validates the options, finds the sensor topics, reconstructs and writes the run directory
+// (created if needed), with the topics used in sensor_roles.json.
+// Throws BadInputError for a bag or options file at fault, UsageError for a run directory that
+// cannot be written.
 ReconstructRunResult ReconstructRun(const std::filesystem::path& bag,
                                     const std::filesystem::path& run_dir,
-                                    reconstruct::ReconstructionOptions options,
+                                    const ReconstructRunOptions& options,
                                     const ProgressCallback& progress = {});
+
+// What the run came to, in one line: "wrote RUN_DIR: N poses, ..." (frames for visual odometry).
+std::string ReconstructSummary(const ReconstructRunResult& result);
 
 }  // namespace littermap::run

@@ -29,6 +29,7 @@ struct RunFiles {
   std::filesystem::path map_png() const { return dir / "map.png"; }
   std::filesystem::path routines() const { return dir / "routines.csv"; }
   std::filesystem::path quality() const { return dir / "quality.json"; }
+  std::filesystem::path sensor_roles() const { return dir / "sensor_roles.json"; }
   std::filesystem::path camera() const { return dir / "camera.tum"; }
   std::filesystem::path camera_sources() const { return dir / "camera_sources.csv"; }
   std::filesystem::path detections() const { return dir / "detections.csv"; }

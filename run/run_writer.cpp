@@ -3,10 +3,9 @@
 #include <cstdio>
 #include <fstream>
 
-#include <nlohmann/json.hpp>
-
 #include "bag/tum_trajectory.hpp"
 #include "core/error.hpp"
+#include "run/quality_file.hpp"
 #include "run/run_files.hpp"
 
 namespace littermap::run {
@@ -66,69 +65,64 @@ void WriteCameraPoses(const std::filesystem::path& run_dir, const SlamPipeline& 
   bag::WriteTumTrajectory(RunFiles(run_dir).camera(), poses);
 }
 
-}  // namespace
-
-std::string QualityJson(const SlamQuality& quality, const ReconstructionResult& result,
-                        const RgbdTracker* rgbd) {
-  nlohmann::ordered_json json;
-  json["scans"] = quality.scans_in;
-  json["scans_tracked"] = quality.scans_tracked;
-  json["scans_without_echoes"] = quality.scans_without_echoes;
-  json["ground_echoes_dropped"] = quality.ground_echoes;
-  json["scans_moving_echo_filtered"] = quality.scans_moving_echo_filtered;
-  json["moving_echoes_dropped"] = quality.moving_echoes;
-  json["scans_given_up_to_moving_echoes"] = quality.scans_moving_echoes;
-  json["stamps_backwards"] = quality.stamps_backwards;
-  json["stamps_duplicate"] = quality.stamps_duplicate;
-  json["odometry_missing"] = quality.odometry_missing;
-  json["odometry_rejected"] = quality.odometry_rejected;
-  json["odometry_arbitrated_by_laser"] = quality.odometry_arbitrated;
-  nlohmann::ordered_json routines;
+ReconstructionQuality SlamRunQuality(const SlamQuality& quality, const ReconstructionResult& result,
+                                     const RgbdTracker* rgbd) {
+  ReconstructionQuality q;
+  q.scans = quality.scans_in;
+  q.scans_tracked = quality.scans_tracked;
+  q.scans_without_echoes = quality.scans_without_echoes;
+  q.ground_echoes_dropped = quality.ground_echoes;
+  q.scans_moving_echo_filtered = quality.scans_moving_echo_filtered;
+  q.moving_echoes_dropped = quality.moving_echoes;
+  q.scans_given_up_to_moving_echoes = quality.scans_moving_echoes;
+  q.stamps_backwards = quality.stamps_backwards;
+  q.stamps_duplicate = quality.stamps_duplicate;
+  q.odometry_missing = quality.odometry_missing;
+  q.odometry_rejected = quality.odometry_rejected;
+  q.odometry_arbitrated_by_laser = quality.odometry_arbitrated;
   for (std::size_t r = 0; r < quality.routine_counts.size(); ++r) {
-    routines[std::string(RoutineName(static_cast<Routine>(r)))] = quality.routine_counts[r];
+    q.routines.emplace_back(RoutineName(static_cast<Routine>(r)), quality.routine_counts[r]);
   }
-  json["routines"] = routines;
-  json["key_frames"] = quality.key_frames;
-  json["loop_closures_found"] = quality.loop_candidates;
-  json["loop_closures_accepted"] = quality.loops_accepted;
-  json["loop_closures_rejected"] = quality.loops_rejected_match +
-                                   quality.loops_rejected_disagreement +
-                                   quality.loops_rejected_after_optimisation;
-  json["loop_closures_rejected_match"] = quality.loops_rejected_match;
-  json["loop_closures_rejected_disagreement"] = quality.loops_rejected_disagreement;
-  json["loop_closures_rejected_after_optimisation"] = quality.loops_rejected_after_optimisation;
-  json["landmarks"] = {{"in_graph", quality.landmarks},
-                       {"sightings", quality.landmark_sightings},
-                       {"associated_by_tracking", quality.landmark_associations},
-                       {"loops_found", quality.landmark_loops_found},
-                       {"loops_accepted", quality.landmark_loops_accepted},
-                       {"loops_rejected", quality.landmark_loops_rejected}};
-  json["optimisations"] = quality.optimisations;
-  json["final_cost"] = quality.final_cost;
-  if (quality.alignment.rounds > 0) {
-    json["scan_alignment"] = {{"pairs", quality.alignment.pairs},
-                              {"pairs_matched", quality.alignment.pairs_matched},
-                              {"correspondences", quality.alignment.correspondences},
-                              {"rounds", quality.alignment.rounds},
-                              {"initial_cost", quality.alignment.initial_cost},
-                              {"final_cost", quality.alignment.final_cost}};
+  q.key_frames = quality.key_frames;
+  q.loop_closures_found = quality.loop_candidates;
+  q.loop_closures_accepted = quality.loops_accepted;
+  q.loop_closures_rejected_match = quality.loops_rejected_match;
+  q.loop_closures_rejected_disagreement = quality.loops_rejected_disagreement;
+  q.loop_closures_rejected_after_optimisation = quality.loops_rejected_after_optimisation;
+  q.loop_closures_rejected = q.loop_closures_rejected_match +
+                             q.loop_closures_rejected_disagreement +
+                             q.loop_closures_rejected_after_optimisation;
+  q.landmarks = {quality.landmarks,
+                 quality.landmark_sightings,
+                 quality.landmark_associations,
+                 quality.landmark_loops_found,
+                 quality.landmark_loops_accepted,
+                 quality.landmark_loops_rejected};
+  q.optimisations = quality.optimisations;
+  q.final_cost = quality.final_cost;
+  const ScanAlignmentResult& a = quality.alignment;
+  if (a.rounds > 0) {
+    q.scan_alignment = ScanAlignmentQuality{a.pairs,  a.pairs_matched, a.correspondences,
+                                            a.rounds, a.initial_cost,  a.final_cost};
   }
   if (rgbd != nullptr) {
     const RgbdTrackerStats& stats = rgbd->stats();
-    json["rgbd"] = {{"frames", stats.frames},
-                    {"key_frames", stats.key_frames},
-                    {"alignments", stats.alignments},
-                    {"aligned", stats.aligned},
-                    {"loop_alignments", stats.loop_alignments},
-                    {"loops_found", quality.camera_loops_found},
-                    {"loops_accepted", quality.camera_loops_accepted},
-                    {"loops_rejected", quality.camera_loops_rejected}};
+    q.rgbd = RgbdQuality{stats.frames,
+                         stats.key_frames,
+                         stats.alignments,
+                         stats.aligned,
+                         stats.loop_alignments,
+                         quality.camera_loops_found,
+                         quality.camera_loops_accepted,
+                         quality.camera_loops_rejected};
   }
-  json["run_time_s"] = result.run_time_s;
-  json["scans_per_s"] = result.scans_per_s;
-  json["warnings"] = result.warnings;
-  return json.dump(2) + "\n";
+  q.run_time_s = result.run_time_s;
+  q.scans_per_s = result.scans_per_s;
+  q.warnings = result.warnings;
+  return q;
 }
+
+}  // namespace
 
 void WriteRun(const std::filesystem::path& run_dir, const SlamPipeline& pipeline,
               const ReconstructionResult& result, const RgbdTracker* rgbd) {
@@ -156,7 +150,7 @@ void WriteRun(const std::filesystem::path& run_dir, const SlamPipeline& pipeline
   pipeline.map().WritePng(files.map_png());
   WriteRoutines(files.routines(), pipeline.scans());
   if (rgbd != nullptr) WriteCameraPoses(run_dir, pipeline, *rgbd);
-  WriteText(files.quality(), QualityJson(pipeline.quality(), result, rgbd));
+  WriteQualityFile(files.quality(), SlamRunQuality(pipeline.quality(), result, rgbd));
 }
 
 void WriteVisualRun(const std::filesystem::path& run_dir, const std::vector<VisualFrame>& frames,
@@ -178,16 +172,16 @@ void WriteVisualRun(const std::filesystem::path& run_dir, const std::vector<Visu
   bag::WriteTumTrajectory(files.trajectory(), trajectory);
   bag::WriteTumTrajectory(files.key_frames(), key_frames);
   WriteText(files.routines(), routines);
-  nlohmann::ordered_json json;
-  json["mode"] = "visual-odometry";
-  json["frames"] = stats.frames;
-  json["frames_tracked"] = stats.tracked;
-  json["key_frames"] = stats.key_frames;
-  json["segments"] = stats.segments;
-  json["run_time_s"] = result.run_time_s;
-  json["frames_per_s"] = result.scans_per_s;
-  json["warnings"] = result.warnings;
-  WriteText(files.quality(), json.dump(2) + "\n");
+  ReconstructionQuality quality;
+  quality.visual_odometry = true;
+  quality.frames = stats.frames;
+  quality.frames_tracked = stats.tracked;
+  quality.key_frames = stats.key_frames;
+  quality.segments = stats.segments;
+  quality.run_time_s = result.run_time_s;
+  quality.scans_per_s = result.scans_per_s;
+  quality.warnings = result.warnings;
+  WriteQualityFile(files.quality(), quality);
 }
 
 }  // namespace littermap::run

@@ -2,9 +2,9 @@
 // The files of a reconstructed run (run/run_files.hpp): trajectory.tum (a pose for every scan,
 // optimised), odometry.tum, keyframes.tum, map.pgm + map.yaml (ROS map_server), map.png
 // (preview), routines.csv (per scan: time, routine, matching ratio, thesis fig. 2.5.2.1; and the
-// landmark sightings holding its key frame in the graph) and quality.json; with the RGB-D routine
-// also camera.tum (the camera's optical frame in 3D at every frame tracked, from the optimised
-// poses) and camera_sources.csv (laser / rgbd / odometry per frame).
+// landmark sightings holding its key frame in the graph) and quality.json (run/quality_file.hpp);
+// with the RGB-D routine also camera.tum (the camera's optical frame in 3D at every frame tracked,
+// from the optimised poses) and camera_sources.csv (laser / rgbd / odometry per frame).
 
 #include <filesystem>
 #include <string>
@@ -29,10 +29,5 @@ void WriteVisualRun(const std::filesystem::path& run_dir,
                     const std::vector<reconstruct::VisualFrame>& frames,
                     const reconstruct::VisualOdometryStats& stats,
                     const reconstruct::ReconstructionResult& result);
-
-// quality.json's text (stable key names).
-std::string QualityJson(const reconstruct::SlamQuality& quality,
-                        const reconstruct::ReconstructionResult& result,
-                        const reconstruct::RgbdTracker* rgbd = nullptr);
 
 }  // namespace littermap::run

@@ -7,11 +7,16 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libeigen3-dev libopencv-dev libsqlite3-dev zlib1g-dev libpng-dev
-  libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
+  libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libzstd-dev liblz4-dev
   libgtest-dev libbenchmark-dev libceres-dev libnanoflann-dev ccache
   libproj-dev libtiff-dev libgeotiff-dev libpcl-dev libopenni2-dev
-  python3 chromium
+  python3 chromium nodejs
 )
+# The interop tests read and write bags with pinned npm packages (tests/interop). Debian's
+# nodejs comes without npm; NodeSource's includes it.
+if ! command -v npm >/dev/null; then
+  packages+=(npm)
+fi
 if [[ "${1:-}" == "--ci" ]]; then
   packages+=(clang libclang-rt-14-dev)
 fi

@@ -1,5 +1,6 @@
 #include "site/run_directory_ingest.hpp"
 
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -35,6 +36,17 @@ std::string ReadQuality(const std::filesystem::path& file) {
   return text.str();
 }
 
+void CheckNameFree(db::SiteDatabase& site, const std::string& name, const std::string& digest) {
+  for (const db::RunRecord& run : site.Runs()) {
+    if (run.name == name && run.source_digest != digest) {
+      throw BadInputError(site.sql().file().string() + ": already holds a run named '" + name +
+                          "' with other results (run " + std::to_string(run.run_id) +
+                          "); the site keeps it. To add these results as another run, give "
+                          "--name");
+    }
+  }
+}
+
 // Places the run (unless it is already in the site) and ingests it.
 IngestResult PlaceAndIngest(db::SiteDatabase& site, const std::filesystem::path& map_yaml,
                             const RunDirectoryIngestOptions& options, const RunInput& run_frame,
@@ -63,6 +75,9 @@ RunDirectoryIngestResult IngestRunDirectory(db::SiteDatabase& site,
                                             RunDirectoryIngestOptions options) {
   RunDirectoryIngestResult result;
   const run::RunDirectoryFiles files = run::FindRunDirectoryFiles(run_dir);
+  const std::string name =
+      options.name.empty() ? std::filesystem::absolute(run_dir).filename().string() : options.name;
+  if (options.refuse_name_in_use) CheckNameFree(site, name, run::RunDigest(files));
   result.simulator_truth = files.simulator_truth;
   if (files.simulator_truth) {
     options.ingest.drop_unobserved_items = true;
@@ -72,8 +87,7 @@ RunDirectoryIngestResult IngestRunDirectory(db::SiteDatabase& site,
   }
   const std::vector<StampedPose> poses = bag::ReadTumTrajectory(files.trajectory);
   RunInput run;
-  run.name =
-      options.name.empty() ? std::filesystem::absolute(run_dir).filename().string() : options.name;
+  run.name = name;
   result.name = run.name;
   run.source_digest = run::RunDigest(files);
   run.T_site_base = PlanarTrajectory(poses);
@@ -86,6 +100,35 @@ RunDirectoryIngestResult IngestRunDirectory(db::SiteDatabase& site,
   run.reconstruction_quality = ReadQuality(run_files.quality());
   result.ingest = PlaceAndIngest(site, run_files.map_yaml(), options, run, &result.notes);
   return result;
+}
+
+RunDirectoryIngestResult IngestRunDirectory(const std::filesystem::path& site_file,
+                                            const std::filesystem::path& run_dir,
+                                            RunDirectoryIngestOptions options) {
+  db::SiteDatabase site = db::SiteDatabase::Open(site_file);
+  return IngestRunDirectory(site, run_dir, std::move(options));
+}
+
+std::string IngestSummary(const RunDirectoryIngestResult& result,
+                          const std::filesystem::path& site_file) {
+  std::string text;
+  for (const std::string& note : result.notes) text += note + "\n";
+  const IngestResult& run = result.ingest;
+  if (run.already_ingested) {
+    return text + "Run " + result.name + " is already in " + site_file.string() + " as run " +
+           std::to_string(run.run_id) + "; nothing changed";
+  }
+  char figures[256];
+  std::snprintf(figures, sizeof figures,
+                "': %zu poses, %.1f m driven, %.0f m2 observed, %zu detections (%zu new items, "
+                "%zu seen again",
+                run.poses, run.length_m, run.observed_area_m2, run.detections, run.new_items,
+                run.items_seen_again);
+  text += "Ingested run " + std::to_string(run.run_id) + " '" + result.name + figures;
+  if (result.simulator_truth) {
+    text += ", " + std::to_string(run.items_unobserved) + " outside the camera coverage skipped";
+  }
+  return text + ")";
 }
 
 }  // namespace littermap::site

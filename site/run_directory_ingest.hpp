@@ -16,6 +16,9 @@ namespace littermap::site {
 
 struct RunDirectoryIngestOptions {
   std::string name;  // the run's name in the site; empty: the directory's name
+  // Refuse the run when the site holds a run of the same name made of other files: the same
+  // survey reprocessed, whose litter the site would count twice.
+  bool refuse_name_in_use = false;
   PlacementOptions placement;
   IngestOptions ingest;
 };
@@ -33,5 +36,13 @@ struct RunDirectoryIngestResult {
 RunDirectoryIngestResult IngestRunDirectory(db::SiteDatabase& site,
                                             const std::filesystem::path& run_dir,
                                             RunDirectoryIngestOptions options);
+// The same for the site database in `site_file`; throws BadInputError when it is not one.
+RunDirectoryIngestResult IngestRunDirectory(const std::filesystem::path& site_file,
+                                            const std::filesystem::path& run_dir,
+                                            RunDirectoryIngestOptions options);
+
+// What placing and adding the run did, a line each (the notes, then the counts of the run).
+std::string IngestSummary(const RunDirectoryIngestResult& result,
+                          const std::filesystem::path& site_file);
 
 }  // namespace littermap::site

@@ -1,5 +1,5 @@
 // A recording killed with SIGKILL keeps every message committed before the kill: the writer
-// commits at least once a second, so at most the last second may be lost.
+// commits at least once a second, so at most the last second may be lost. Both storages.
 
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -28,8 +28,11 @@ std::vector<std::uint8_t> Payload(std::uint64_t index) {
 
 // Child: records as fast as a sensor would (~500 Hz), telling the parent how many messages it
 // has handed to the writer.
-[[noreturn]] void RecordUntilKilled(const std::filesystem::path& bag, int report_fd) {
-  BagWriter writer(bag);
+[[noreturn]] void RecordUntilKilled(const std::filesystem::path& bag, const std::string& storage,
+                                    int report_fd) {
+  BagWriterOptions options;
+  options.storage = storage;
+  BagWriter writer(bag, options);
   writer.AddTopic("/data", "x/msg/Blob", TopicQos::kSensorData);
   for (std::uint64_t i = 0;; ++i) {
     writer.Write("/data", static_cast<TimestampNs>(i), Payload(i));
@@ -39,7 +42,9 @@ std::vector<std::uint8_t> Payload(std::uint64_t index) {
   }
 }
 
-TEST(BagCrash, SigkillLosesAtMostTheLastSecond) {
+class BagCrash : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(BagCrash, SigkillLosesAtMostTheLastSecond) {
   testing::TempDir dir;
   const auto bag = dir / "killed";
   int pipe_fds[2];
@@ -48,7 +53,7 @@ TEST(BagCrash, SigkillLosesAtMostTheLastSecond) {
   ASSERT_GE(child, 0);
   if (child == 0) {
     close(pipe_fds[0]);
-    RecordUntilKilled(bag, pipe_fds[1]);
+    RecordUntilKilled(bag, GetParam(), pipe_fds[1]);
   }
   close(pipe_fds[1]);
 
@@ -90,7 +95,14 @@ TEST(BagCrash, SigkillLosesAtMostTheLastSecond) {
   EXPECT_GE(read_count, must_survive);
   EXPECT_LE(read_count, written);
   EXPECT_EQ(reader.info().message_count, read_count);
+  if (GetParam() == "mcap") {
+    ASSERT_FALSE(reader.warnings().empty()) << "a cut-off MCAP file is reported";
+    EXPECT_NE(reader.warnings()[0].find("killed_0.mcap"), std::string::npos)
+        << reader.warnings()[0];
+  }
 }
+
+INSTANTIATE_TEST_SUITE_P(Storages, BagCrash, ::testing::Values("sqlite3", "mcap"));
 
 }  // namespace
 }  // namespace littermap::bag

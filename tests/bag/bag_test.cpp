@@ -228,7 +228,7 @@ TEST(Bag, ErrorsNameTheFileAndTheProblem) {
   ExpectBadInput(dir / "nothing-here", "no such bag directory");
 
   std::filesystem::create_directories(dir / "empty");
-  ExpectBadInput(dir / "empty", "no .db3 file");
+  ExpectBadInput(dir / "empty", "no .db3 or .mcap file");
 
   std::filesystem::create_directories(dir / "garbage");
   std::ofstream(dir / "garbage" / "x.db3") << std::string(5000, 'x');

@@ -24,8 +24,8 @@ TEST(RgbdPairing, PairsColourAndDepthWithinTheGapInEitherOrder) {
   const auto first = pairing.AddDepth(Image(115 * kMs, "png"));
   ASSERT_TRUE(first);
   EXPECT_EQ(first->stamp_ns, 100 * kMs);  // the colour image's stamp
-  EXPECT_EQ(first->colour.format, "jpeg");
-  EXPECT_EQ(first->depth.format, "png");
+  EXPECT_EQ(std::get<msg::CompressedImage>(first->colour).format, "jpeg");
+  EXPECT_EQ(std::get<msg::CompressedImage>(first->depth).format, "png");
   EXPECT_FALSE(pairing.AddDepth(Image(200 * kMs, "png")));
   const auto second = pairing.AddColour(Image(190 * kMs, "jpeg"));
   ASSERT_TRUE(second);
@@ -38,7 +38,7 @@ TEST(RgbdPairing, AnImageWithoutPartnerWaitsUntilANewerOneReplacesIt) {
   EXPECT_FALSE(pairing.AddColour(Image(200 * kMs, "jpeg")));  // 100 ms apart: no pair
   const auto frame = pairing.AddDepth(Image(201 * kMs, "png"));
   ASSERT_TRUE(frame);
-  EXPECT_EQ(StampOf(frame->depth.header), 201 * kMs);
+  EXPECT_EQ(StampOf(frame->depth), 201 * kMs);
 }
 
 TEST(RgbdPairing, ResetForgetsTheWaitingImages) {

@@ -1,13 +1,13 @@
-#include "cli/date_argument.hpp"
+#include "core/utc_date.hpp"
 
 #include <cstdio>
 #include <ctime>
 
 #include "core/error.hpp"
 
-namespace littermap::cli {
+namespace littermap {
 
-std::optional<double> ParseDateArgument(const std::string& text, const char* option) {
+std::optional<double> ParseUtcDate(const std::string& text, const char* option) {
   if (text.empty()) return std::nullopt;
   std::tm date{};
   char separator = 0;
@@ -27,4 +27,4 @@ std::optional<double> ParseDateArgument(const std::string& text, const char* opt
   return static_cast<double>(timegm(&date));
 }
 
-}  // namespace littermap::cli
+}  // namespace littermap

@@ -1,16 +1,17 @@
-#include "cli/truth_map.hpp"
+#include "sim/truth_map.hpp"
 
 #include "core/pose3.hpp"
 #include "reconstruct/occupancy_grid.hpp"
 #include "reconstruct/scan_points.hpp"
 
-namespace littermap::cli {
-void WriteTruthMap(const sim::Simulation& simulation, const std::filesystem::path& truth_dir) {
+namespace littermap::sim {
+
+void WriteTruthMap(const Simulation& simulation, const std::filesystem::path& truth_dir) {
   const PlanarPose T_base_laser = ToPlanar(simulation.T_base_laser());
   reconstruct::ScanPointsOptions points;
   points.laser_height_m = simulation.T_base_laser().translation().z();
   reconstruct::OccupancyGrid grid({});
-  const sim::WorldSpec& spec = simulation.world().spec;
+  const WorldSpec& spec = simulation.world().spec;
   grid.Cover({-1, -1}, {spec.size_x_m + 1, spec.size_y_m + 1});  // the park, allocated once
   for (std::size_t k = 0; k < simulation.scan_count(); ++k) {
     const double t_s = simulation.ScanTime(k);
@@ -29,4 +30,4 @@ void WriteTruthMap(const sim::Simulation& simulation, const std::filesystem::pat
   grid.WritePgmYaml(truth_dir / "map.pgm", truth_dir / "map.yaml");
 }
 
-}  // namespace littermap::cli
+}  // namespace littermap::sim

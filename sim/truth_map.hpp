@@ -8,8 +8,8 @@
 
 #include "sim/simulation.hpp"
 
-namespace littermap::cli {
+namespace littermap::sim {
 
-void WriteTruthMap(const sim::Simulation& simulation, const std::filesystem::path& truth_dir);
+void WriteTruthMap(const Simulation& simulation, const std::filesystem::path& truth_dir);
 
-}  // namespace littermap::cli
+}  // namespace littermap::sim

@@ -1,0 +1,24 @@
+#pragma once
+// A check of a recording before leaving the field: every message of a type littermap knows is
+// decoded (bag/message_stream.hpp), so a damaged one is found now rather than by a later stage.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "bag/bag_reader.hpp"
+#include "core/progress.hpp"
+
+namespace littermap::bag {
+
+struct VerifyResult {
+  std::uint64_t decoded_messages = 0;  // messages of known types, all of which decoded
+  std::vector<std::string> warnings;   // one per topic of a type littermap does not use
+};
+
+// Decodes every message from the reader's current position, reporting progress ("verifying")
+// against the bag's message count. The first message that does not decode is a BadInputError
+// naming the bag, topic and message index.
+VerifyResult VerifyMessages(BagReader& reader, const ProgressCallback& progress = {});
+
+}  // namespace littermap::bag

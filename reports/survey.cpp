@@ -1,0 +1,169 @@
+#include "reports/survey.hpp"
+
+#include <exception>
+#include <fstream>
+#include <utility>
+#include <vector>
+
+#include "core/error.hpp"
+#include "db/site_database.hpp"
+#include "heatmap/heatmap_files.hpp"
+#include "reports/report_files.hpp"
+#include "run/reconstruct_run.hpp"
+#include "run/run_files.hpp"
+#include "run/stage_marker.hpp"
+#include "site/run_directory_ingest.hpp"
+
+namespace littermap::reports {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Stage {
+  std::string name;
+  run::StageFiles files;
+  std::function<void(const ProgressCallback& progress)> run;
+};
+
+// The survey's directories and what the stages share.
+struct Survey {
+  Survey(const SurveyOptions& survey_options, const SurveyCallbacks& survey_callbacks)
+      : options(survey_options), callbacks(survey_callbacks) {}
+
+  const SurveyOptions& options;
+  const SurveyCallbacks& callbacks;
+  std::string name;
+  fs::path out, run_dir, maps_dir, report_dir, stages_dir;
+  SiteReport report;
+
+  void Print(const std::string& text) const {
+    if (callbacks.print) callbacks.print(text);
+  }
+  void Warn(const std::vector<std::string>& warnings) const {
+    if (!callbacks.warn) return;
+    for (const std::string& warning : warnings) callbacks.warn(warning);
+  }
+};
+
+// Before any long stage: a bad site fails fast.
+void OpenOrCreateSite(const Survey& survey) {
+  const fs::path& file = survey.options.site;
+  if (fs::exists(file)) {
+    db::SiteDatabase::Open(file);
+    return;
+  }
+  db::SiteOptions site;
+  site.name = file.stem().string();
+  db::SiteDatabase::Create(file, site);
+  survey.Print("Created site '" + site.name + "' in " + file.string() +
+               ": local frame, positions in metres from the dock (for GPS coordinates create "
+               "the site first with 'littermap site init --crs')");
+}
+
+std::vector<Stage> Stages(Survey& survey) {
+  const SurveyOptions& options = survey.options;
+  const std::vector<fs::path> bag_files = run::FilesIn(options.bag);
+  const run::RunFiles files(survey.run_dir);
+  std::vector<fs::path> detect_inputs = bag_files;
+  detect_inputs.push_back(files.trajectory());
+  detect_inputs.push_back(options.detect.model);
+  const auto reconstruct = [&survey](const ProgressCallback& progress) {
+    const run::ReconstructRunResult result = run::ReconstructRun(
+        survey.options.bag, survey.run_dir, survey.options.reconstruct, progress);
+    survey.Warn(result.warnings);
+    survey.Print(run::ReconstructSummary(result));
+  };
+  const auto detect = [&survey](const ProgressCallback& progress) {
+    const run::DetectRunResult result =
+        run::DetectRun(survey.options.bag, survey.run_dir, survey.options.detect, progress);
+    survey.Warn(result.warnings);
+    survey.Print(run::DetectSummary(result, survey.options.detect.fusion.min_views));
+  };
+  const auto ingest = [&survey](const ProgressCallback&) {
+    site::RunDirectoryIngestOptions run;
+    run.name = survey.name;
+    run.refuse_name_in_use = true;
+    const site::RunDirectoryIngestResult result =
+        site::IngestRunDirectory(survey.options.site, survey.run_dir, run);
+    survey.Warn(result.warnings);
+    survey.Print(site::IngestSummary(result, survey.options.site));
+  };
+  const auto heatmap = [&survey](const ProgressCallback&) {
+    const heatmap::HeatmapFilesResult result =
+        heatmap::WriteHeatmapFiles(survey.options.site, survey.maps_dir, {});
+    survey.Warn(result.warnings);
+    survey.Print(heatmap::HeatmapSummary(result, survey.maps_dir));
+  };
+  const auto report = [&survey](const ProgressCallback&) {
+    survey.report =
+        WriteReportFiles(survey.options.site, survey.report_dir, StampedReportFilesOptions());
+    survey.Print("wrote " + (survey.report_dir / "index.html").string() + " and report.json");
+  };
+  return {
+      {"reconstruct",
+       {bag_files, {files.trajectory(), files.map_yaml(), files.map_pgm(), files.quality()}},
+       reconstruct},
+      {"detect", {detect_inputs, {files.items(), files.detections()}}, detect},
+      {"ingest", {}, ingest},
+      {"heatmap", {}, heatmap},
+      {"report", {}, report},
+  };
+}
+
+ProgressCallback Prefixed(const ProgressCallback& progress, const std::string& prefix) {
+  if (!progress) return {};
+  return [progress, prefix](const Progress& update) {
+    const std::string task = prefix + std::string(update.task);
+    Progress prefixed = update;
+    prefixed.task = task;
+    progress(prefixed);
+  };
+}
+
+void RunStage(const Survey& survey, const Stage& stage, const std::string& label) {
+  const fs::path marker = survey.stages_dir / (stage.name + ".done");
+  if (!survey.options.force && run::StageUpToDate(stage.files, marker)) {
+    survey.Print(label + " up to date (outputs newer than inputs), skipped; --force redoes it");
+    return;
+  }
+  survey.Print(label);
+  fs::remove(marker);
+  try {
+    stage.run(Prefixed(survey.callbacks.progress, label + " "));
+  } catch (const std::exception& e) {
+    const auto* error = dynamic_cast<const Error*>(&e);
+    throw Error(error ? error->kind() : ErrorKind::kInternal,
+                "survey stage '" + stage.name + "' failed: " + e.what() +
+                    "\n  the earlier stages' outputs are kept in " + survey.out.string() +
+                    "; once fixed, the same command resumes at this stage");
+  }
+  std::ofstream(marker) << stage.name << " finished\n";
+}
+
+}  // namespace
+
+SurveyResult RunSurvey(const SurveyOptions& options, const SurveyCallbacks& callbacks) {
+  if (!fs::is_directory(options.bag)) {
+    throw UsageError(options.bag.string() + ": not a run bag directory");
+  }
+  Survey survey(options, callbacks);
+  survey.name = options.name.empty()
+                    ? fs::absolute(options.bag).lexically_normal().filename().string()
+                    : options.name;
+  survey.out = options.output_dir.empty() ? fs::path(survey.name + "-survey") : options.output_dir;
+  survey.run_dir = survey.out / "run";
+  survey.maps_dir = survey.out / "maps";
+  survey.report_dir = survey.out / "report";
+  survey.stages_dir = survey.out / ".stages";
+  fs::create_directories(survey.stages_dir);
+  OpenOrCreateSite(survey);
+  const std::vector<Stage> stages = Stages(survey);
+  for (std::size_t i = 0; i < stages.size(); ++i) {
+    RunStage(survey, stages[i],
+             "[" + std::to_string(i + 1) + "/" + std::to_string(stages.size()) + " " +
+                 stages[i].name + "]");
+  }
+  return {survey.name, survey.out, survey.report_dir / "index.html", std::move(survey.report)};
+}
+
+}  // namespace littermap::reports

@@ -1,0 +1,38 @@
+#include "run/sensor_roles_file.hpp"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "bag/bag_reader.hpp"
+#include "core/error.hpp"
+
+namespace littermap::run {
+
+bag::SensorRoles ResolveBagRoles(const std::filesystem::path& bag,
+                                 const std::map<std::string, std::string>& given,
+                                 const bag::RunTopics& defaults) {
+  const bag::BagReader reader(bag);
+  try {
+    return bag::ResolveSensorRoles(reader.info(), given, defaults);
+  } catch (const BadInputError& e) {
+    throw BadInputError(bag.string() + ": " + e.what());
+  }
+}
+
+void WriteSensorRoles(const std::filesystem::path& file, const bag::SensorRoles& roles) {
+  nlohmann::ordered_json json = nlohmann::ordered_json::object();
+  const bag::RunTopics& t = roles.topics;
+  const std::map<std::string, std::string> topics = {
+      {"scan", t.scan},     {"odometry", t.odometry}, {"imu", t.imu},
+      {"colour", t.colour}, {"depth", t.depth},       {"camera_info", t.camera_info}};
+  for (const std::string& role : bag::SensorRoleNames()) {
+    const auto found = roles.found.find(role);
+    json[role] = {{"topic", topics.at(role)},
+                  {"found", found == roles.found.end() ? "missing" : found->second}};
+  }
+  std::ofstream out(file);
+  out << json.dump(2) << "\n";
+  if (!out) throw InternalError(file.string() + ": cannot write");
+}
+
+}  // namespace littermap::run
