@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bag/bag_reader.hpp"
+#include "bag/sensor_roles.hpp"
 #include "bag/verify_messages.hpp"
 
 namespace littermap::bag {
@@ -88,6 +89,16 @@ std::string ToJson(const BagSummary& summary) {
                               {"serialization_format", topic.serialization_format},
                               {"message_count", topic.message_count}});
   }
+  const SensorRoles roles = FindSensorRoles(info);
+  nlohmann::json& role_json = json["sensor_roles"] = nlohmann::json::object();
+  for (const auto& [role, found] : roles.found) {
+    role_json[role] = {{"found", found}};
+    if (found == "ambiguous") {
+      role_json[role]["candidates"] = roles.candidates.at(role);
+    } else if (found != "missing") {
+      role_json[role]["topic"] = TopicOf(roles, role);
+    }
+  }
   if (summary.verified_message_count) {
     json["verified_message_count"] = *summary.verified_message_count;
   }
@@ -119,6 +130,10 @@ std::string ToText(const BagSummary& summary) {
             " | Serialization Format: " + topic.serialization_format + "\n";
   }
   if (info.topics.empty()) text += "\n";
+  const auto roles = DescribeSensorRoles(FindSensorRoles(info));
+  for (std::size_t i = 0; i < roles.size(); ++i) {
+    text += (i ? kIndent : "Sensor roles:      ") + roles[i] + "\n";
+  }
   if (summary.verified_message_count) {
     text += Format("Verified:          %llu messages decode\n",
                    static_cast<unsigned long long>(*summary.verified_message_count));

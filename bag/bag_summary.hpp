@@ -37,11 +37,12 @@ BagSummary SummariseBag(const std::filesystem::path& bag, const BagSummaryOption
 
 // A JSON object, 2-space indent, no final newline. Stable keys: path, storage_identifier,
 // schema_version, size_bytes, files, message_count, start_ns, end_ns, duration_s, start_utc,
-// end_utc, metadata_rebuilt, topics[] (name, type, serialization_format, message_count) and,
-// when verified, verified_message_count.
+// end_utc, metadata_rebuilt, topics[] (name, type, serialization_format, message_count),
+// sensor_roles (role -> found, and topic or candidates; bag/sensor_roles.hpp) and, when
+// verified, verified_message_count.
 std::string ToJson(const BagSummary& summary);
 
-// The `ros2 bag info` layout, every line ending in "\n".
+// The `ros2 bag info` layout and which topic fills each sensor role, every line ending in "\n".
 std::string ToText(const BagSummary& summary);
 
 // Bytes in binary units with one decimal: "744.0 KiB".

@@ -79,8 +79,10 @@ std::map<std::string, std::string> ParseRoleAssignments(
   return given;
 }
 
-SensorRoles ResolveSensorRoles(const BagInfo& info, const std::map<std::string, std::string>& given,
-                               const RunTopics& defaults) {
+namespace {
+
+SensorRoles Resolve(const BagInfo& info, const std::map<std::string, std::string>& given,
+                    const RunTopics& defaults, bool strict) {
   SensorRoles roles;
   roles.topics = defaults;
   for (const Role& role : Roles()) {
@@ -108,6 +110,11 @@ SensorRoles ResolveSensorRoles(const BagInfo& info, const std::map<std::string, 
     for (const TopicInfo& candidate : info.topics) {
       if (Fits(role, candidate)) candidates.push_back(candidate.name);
     }
+    if (candidates.size() > 1 && !strict) {
+      roles.found[role.name] = "ambiguous";
+      roles.candidates[role.name] = candidates;
+      continue;
+    }
     if (candidates.size() > 1) {
       throw BadInputError("the bag has " + std::to_string(candidates.size()) + " " + role.name +
                           " topics (" + Join(candidates) + "): choose one with --topic " +
@@ -121,6 +128,38 @@ SensorRoles ResolveSensorRoles(const BagInfo& info, const std::map<std::string, 
     }
   }
   return roles;
+}
+
+}  // namespace
+
+SensorRoles ResolveSensorRoles(const BagInfo& info, const std::map<std::string, std::string>& given,
+                               const RunTopics& defaults) {
+  return Resolve(info, given, defaults, true);
+}
+
+SensorRoles FindSensorRoles(const BagInfo& info) { return Resolve(info, {}, RunTopics{}, false); }
+
+const std::string& TopicOf(const SensorRoles& roles, const std::string& role) {
+  for (const Role& r : Roles()) {
+    if (role == r.name) return roles.topics.*r.topic;
+  }
+  throw UsageError("unknown sensor role '" + role + "'");
+}
+
+std::vector<std::string> DescribeSensorRoles(const SensorRoles& roles) {
+  std::vector<std::string> lines;
+  for (const std::string& role : SensorRoleNames()) {
+    const std::string found = roles.found.count(role) ? roles.found.at(role) : "missing";
+    if (found == "missing") {
+      lines.push_back(role + ": none");
+    } else if (found == "ambiguous") {
+      lines.push_back(role + ": one of " + Join(roles.candidates.at(role)) + " (--topic " + role +
+                      "=TOPIC)");
+    } else {
+      lines.push_back(role + ": " + TopicOf(roles, role) + " (" + found + ")");
+    }
+  }
+  return lines;
 }
 
 }  // namespace littermap::bag

@@ -21,9 +21,11 @@ namespace littermap::bag {
 
 struct SensorRoles {
   RunTopics topics;
-  // Role -> how its topic was found: "given", "default", "by type", or "missing". A missing
-  // role keeps its default name, and the stage that needs it fails naming it.
+  // Role -> how its topic was found: "given", "default", "by type", "missing" or (from
+  // FindSensorRoles only) "ambiguous". A missing role keeps its default name, and the stage that
+  // needs it fails naming it.
   std::map<std::string, std::string> found;
+  std::map<std::string, std::vector<std::string>> candidates;  // of the ambiguous roles
 };
 
 // The role names, in the order `info` lists them.
@@ -39,5 +41,15 @@ std::map<std::string, std::string> ParseRoleAssignments(
 SensorRoles ResolveSensorRoles(const BagInfo& info,
                                const std::map<std::string, std::string>& given = {},
                                const RunTopics& defaults = {});
+
+// The same with the default names and nothing given, for showing (`info`): an ambiguous role
+// is reported, not thrown.
+SensorRoles FindSensorRoles(const BagInfo& info);
+
+// The topic of a role ("scan", ...) in roles.topics.
+const std::string& TopicOf(const SensorRoles& roles, const std::string& role);
+
+// "ROLE: TOPIC (how)" for each role; an ambiguous one lists its candidates.
+std::vector<std::string> DescribeSensorRoles(const SensorRoles& roles);
 
 }  // namespace littermap::bag

@@ -21,13 +21,9 @@ bag::SensorRoles ResolveBagRoles(const std::filesystem::path& bag,
 
 void WriteSensorRoles(const std::filesystem::path& file, const bag::SensorRoles& roles) {
   nlohmann::ordered_json json = nlohmann::ordered_json::object();
-  const bag::RunTopics& t = roles.topics;
-  const std::map<std::string, std::string> topics = {
-      {"scan", t.scan},     {"odometry", t.odometry}, {"imu", t.imu},
-      {"colour", t.colour}, {"depth", t.depth},       {"camera_info", t.camera_info}};
   for (const std::string& role : bag::SensorRoleNames()) {
     const auto found = roles.found.find(role);
-    json[role] = {{"topic", topics.at(role)},
+    json[role] = {{"topic", bag::TopicOf(roles, role)},
                   {"found", found == roles.found.end() ? "missing" : found->second}};
   }
   std::ofstream out(file);

@@ -11,6 +11,7 @@
 
 #include "bag/bag_writer.hpp"
 #include "bag/ros_codec.hpp"
+#include "bag/sensor_roles.hpp"
 #include "bag/verify_messages.hpp"
 #include "core/error.hpp"
 #include "support/temp_dir.hpp"
@@ -66,7 +67,7 @@ TEST(BagSummary, TextIsTheRos2BagInfoLayout) {
   EXPECT_FALSE(summary.verified_message_count);
   EXPECT_EQ(summary.size_bytes, std::filesystem::file_size(dir / "run" / "run_0.db3"));
   const std::vector<std::string> lines = Lines(ToText(summary));
-  ASSERT_EQ(lines.size(), 8u);
+  ASSERT_EQ(lines.size(), 14u);
   EXPECT_EQ(lines[0], "Files:             run_0.db3");
   EXPECT_EQ(lines[1], "Bag size:          " + HumanSize(summary.size_bytes));
   EXPECT_EQ(lines[2], "Storage id:        sqlite3 (schema 4)");
@@ -77,16 +78,20 @@ TEST(BagSummary, TextIsTheRos2BagInfoLayout) {
   EXPECT_EQ(lines[7],
             "Topic information: Topic: /scan | Type: sensor_msgs/msg/LaserScan | Count: 3 | "
             "Serialization Format: cdr");
+  EXPECT_EQ(lines[8], "Sensor roles:      scan: /scan (default)");
+  EXPECT_EQ(lines[9], "                   odometry: none");
+  EXPECT_EQ(lines[13], "                   camera_info: none");
 }
 
 TEST(BagSummary, TextOfNoTopicsAndSeveralFilesKeepsTheColumns) {
   BagSummary summary;
   summary.info.files = {{"a_0.db3"}, {"a_1.db3"}};
   const std::vector<std::string> lines = Lines(ToText(summary));
-  ASSERT_EQ(lines.size(), 9u);
+  ASSERT_EQ(lines.size(), 15u);
   EXPECT_EQ(lines[0], "Files:             a_0.db3");
   EXPECT_EQ(lines[1], "                   a_1.db3");
   EXPECT_EQ(lines[8], "Topic information: ");
+  EXPECT_EQ(lines[9], "Sensor roles:      scan: none");
   summary.verified_message_count = 0;
   EXPECT_EQ(Lines(ToText(summary)).back(), "Verified:          0 messages decode");
 }
@@ -113,6 +118,10 @@ TEST(BagSummary, JsonKeepsItsKeys) {
                                                {"type", "sensor_msgs/msg/LaserScan"},
                                                {"serialization_format", "cdr"},
                                                {"message_count", 3}}));
+  EXPECT_EQ(json["sensor_roles"]["scan"],
+            nlohmann::json({{"found", "default"}, {"topic", "/scan"}}));
+  EXPECT_EQ(json["sensor_roles"]["imu"], nlohmann::json({{"found", "missing"}}));
+  EXPECT_EQ(json["sensor_roles"].size(), SensorRoleNames().size());
   EXPECT_FALSE(json.contains("verified_message_count"));
   summary.verified_message_count = 3;
   EXPECT_EQ(nlohmann::json::parse(ToJson(summary))["verified_message_count"], 3);

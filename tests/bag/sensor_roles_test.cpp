@@ -66,6 +66,22 @@ TEST(SensorRoles, TwoLasersNeedAChoice) {
   EXPECT_EQ(roles.found.at("scan"), "given");
 }
 
+TEST(SensorRoles, InfoShowsAnAmbiguousRoleInsteadOfStopping) {
+  const BagInfo info = Bag({{"/scan_front", "sensor_msgs/msg/LaserScan"},
+                            {"/scan_rear", "sensor_msgs/msg/LaserScan"},
+                            {"/odometry/filtered", "nav_msgs/msg/Odometry"}});
+  const SensorRoles roles = FindSensorRoles(info);
+  EXPECT_EQ(roles.found.at("scan"), "ambiguous");
+  EXPECT_EQ(roles.candidates.at("scan"), (std::vector<std::string>{"/scan_front", "/scan_rear"}));
+  EXPECT_EQ(TopicOf(roles, "odometry"), "/odometry/filtered");
+  const std::vector<std::string> lines = DescribeSensorRoles(roles);
+  ASSERT_EQ(lines.size(), SensorRoleNames().size());
+  EXPECT_EQ(lines[0], "scan: one of /scan_front, /scan_rear (--topic scan=TOPIC)");
+  EXPECT_EQ(lines[1], "odometry: /odometry/filtered (by type)");
+  EXPECT_EQ(lines[2], "imu: none");
+  EXPECT_THROW(TopicOf(roles, "lidar"), UsageError);
+}
+
 TEST(SensorRoles, WrongChoicesAreUsageErrors) {
   const BagInfo info =
       Bag({{"/scan_front", "sensor_msgs/msg/LaserScan"}, {"/odom", "nav_msgs/msg/Odometry"}});
