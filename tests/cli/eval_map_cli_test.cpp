@@ -1,13 +1,18 @@
-// `littermap eval map` on a real log (the Intel lab, CARMEN): the map littermap's trajectory
-// draws from the scans is sharper than the one the log's own corrected poses draw, and far
-// sharper than the noisy odometry's; and the command's refusals.
+// `littermap eval map` on a real log (the Intel lab, CARMEN): the table and JSON of several
+// trajectories of its scans, a shaken copy of the corrected poses drawing a blurrier map than
+// the poses themselves, and the command's refusals. (That littermap's own trajectory draws the
+// lab sharper than the reference is asserted in reconstruct's data tier, which reconstructs the
+// log anyway.)
 
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <numbers>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "bag/tum_trajectory.hpp"
 #include "support/carmen_import.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
@@ -18,36 +23,39 @@ namespace {
 using testing::Quote;
 using testing::RunLittermap;
 
-TEST(EvalMapCli, LittermapDrawsTheIntelLabSharperThanItsReference) {
+TEST(EvalMapCli, AShakenTrajectoryDrawsTheIntelLabBlurrier) {
   testing::TempDir dir;
   ASSERT_NO_FATAL_FAILURE(testing::ImportCarmen("intel", 1, dir.path()));
-  const auto run =
-      RunLittermap("-q reconstruct " + Quote(dir / "bag") + " -o " + Quote(dir / "run"));
-  ASSERT_EQ(run.exit_code, 0) << run.output;
+  // The reference with every other pose turned by 2 degrees and moved by 5 cm.
+  std::vector<StampedPose> shaken = bag::ReadTumTrajectory(dir / "ref.tum");
+  for (std::size_t i = 0; i < shaken.size(); i += 2) {
+    shaken[i].position_m.x() += 0.05;
+    shaken[i].orientation =
+        Eigen::AngleAxisd(2 * std::numbers::pi / 180, Eigen::Vector3d::UnitZ()) *
+        shaken[i].orientation;
+  }
+  bag::WriteTumTrajectory(dir / "shaken.tum", shaken);
 
-  const auto eval = RunLittermap(
-      "-q eval map " + Quote(dir / "bag") + " " + Quote(dir / "run" / "trajectory.tum") + " " +
-      Quote(dir / "ref.tum") + " " + Quote(dir / "run" / "odometry.tum") + " --json");
+  const auto eval =
+      RunLittermap("-q eval map " + Quote(dir / "bag") + " " + Quote(dir / "ref.tum") + " " +
+                   Quote(dir / "shaken.tum") + " --json");
   ASSERT_EQ(eval.exit_code, 0) << eval.output;
   const auto json = nlohmann::json::parse(eval.output);
-  ASSERT_EQ(json["trajectories"].size(), 3u);
+  ASSERT_EQ(json["trajectories"].size(), 2u);
   for (const auto& row : json["trajectories"]) {
     EXPECT_EQ(row["scans"], 910);
     EXPECT_EQ(row["scans_drawn"], 910);
   }
-  const double littermap = json["trajectories"][0]["occupied_cells"].get<double>();
-  const double reference = json["trajectories"][1]["occupied_cells"].get<double>();
-  const double odometry = json["trajectories"][2]["occupied_cells"].get<double>();
-  // Measured: 21,917 / 26,436 / 72,806 cells of 5 cm (ratios 0.83 and 2.75 to the reference).
-  EXPECT_LT(littermap, 0.95 * reference);
-  EXPECT_GT(odometry, 2 * reference);
+  const double reference = json["trajectories"][0]["occupied_cells"].get<double>();
+  const double shaken_cells = json["trajectories"][1]["occupied_cells"].get<double>();
+  EXPECT_GT(shaken_cells, 1.2 * reference);  // measured 38,809 against 26,436 cells (1.47)
 
   // The table names every trajectory and compares it with the first.
-  const auto table =
-      RunLittermap("-q eval map " + Quote(dir / "bag") + " " +
-                   Quote(dir / "run" / "trajectory.tum") + " " + Quote(dir / "ref.tum"));
+  const auto table = RunLittermap("-q eval map " + Quote(dir / "bag") + " " +
+                                  Quote(dir / "shaken.tum") + " " + Quote(dir / "ref.tum"));
   ASSERT_EQ(table.exit_code, 0) << table.output;
   EXPECT_NE(table.output.find("100.0%"), std::string::npos) << table.output;
+  EXPECT_NE(table.output.find("shaken.tum"), std::string::npos) << table.output;
   EXPECT_NE(table.output.find("ref.tum"), std::string::npos) << table.output;
 
   // A trajectory of another time places no scan: bad input, named.
