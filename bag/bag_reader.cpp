@@ -145,16 +145,27 @@ void BagReader::Impl::CountMessages() {
       file_last = file_info.message_count ? std::max(file_last, count.last_ns) : count.last_ns;
       file_info.message_count += count.count;
     }
+    const auto span = [&](TimestampNs first_ns, TimestampNs last_ns) {
+      const auto duration = CheckedDifference(last_ns, first_ns);
+      if (!duration) {
+        throw BadInputError((directory / file_info.relative_path).string() +
+                            ": message stamps from " + std::to_string(first_ns) + " to " +
+                            std::to_string(last_ns) +
+                            " ns lie further apart than 64-bit nanoseconds reach");
+      }
+      return *duration;
+    };
     file_info.starting_time_ns = file_first;
-    file_info.duration_ns = file_last - file_first;
+    file_info.duration_ns = span(file_first, file_last);
     if (file_info.message_count == 0) continue;
     first = any ? std::min(first, file_first) : file_first;
     last = any ? std::max(last, file_last) : file_last;
     any = true;
     info.message_count += file_info.message_count;
+    span(first, last);  // the bag's span so far, ending in this file
   }
   info.starting_time_ns = first;
-  info.duration_ns = last - first;
+  info.duration_ns = last - first;  // checked above
   for (std::size_t i = 0; i < info.topics.size(); ++i) {
     if (i >= recorded_counts.size() || recorded_counts[i] != info.topics[i].message_count) {
       rebuilt = true;

@@ -101,8 +101,10 @@ struct BagWriter::Impl {
       any = true;
     }
     info.starting_time_ns = first;
-    info.duration_ns = last - first;
-    info.files.push_back({storage->file().filename().string(), first, last - first, message_count});
+    // Saturated for stamps 292 years apart, which readers then refuse, naming the file.
+    info.duration_ns = SaturatingDifference(last, first);
+    info.files.push_back(
+        {storage->file().filename().string(), first, info.duration_ns, message_count});
     return info;
   }
 

@@ -73,13 +73,13 @@ std::string StampAgreement::Observe(const std::string& topic, TimestampNs header
                                     TimestampNs recorded_ns, StampSource source) {
   if (judged_[topic]) return {};
   std::vector<TimestampNs>& offsets = offsets_[topic];
-  offsets.push_back(header_ns - recorded_ns);
+  offsets.push_back(SaturatingDifference(header_ns, recorded_ns));
   if (offsets.size() < kSamples) return {};
   judged_[topic] = true;
   std::nth_element(offsets.begin(), offsets.begin() + kSamples / 2, offsets.end());
   const TimestampNs median = offsets[kSamples / 2];
   offsets_.erase(topic);
-  if (std::llabs(median) <= kToleranceNs) return {};
+  if (median >= -kToleranceNs && median <= kToleranceNs) return {};
   char seconds[32];
   std::snprintf(seconds, sizeof(seconds), "%.1f", std::fabs(ToSeconds(median)));
   return topic + ": header stamps are " + seconds + " s " + (median < 0 ? "behind" : "ahead of") +

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdint>
 #include <ctime>
+#include <limits>
+#include <optional>
 #include <string>
 
 namespace littermap {
@@ -14,6 +16,21 @@ using TimestampNs = std::int64_t;
 constexpr TimestampNs kNanosecondsPerSecond = 1'000'000'000;
 
 inline double ToSeconds(TimestampNs t) { return static_cast<double>(t) * 1e-9; }
+
+// later - earlier, or nullopt when stamps from a damaged or hostile file lie further apart than
+// 64-bit nanoseconds reach (292 years).
+inline std::optional<TimestampNs> CheckedDifference(TimestampNs later, TimestampNs earlier) {
+  TimestampNs difference = 0;
+  if (__builtin_sub_overflow(later, earlier, &difference)) return std::nullopt;
+  return difference;
+}
+
+// later - earlier, clamped to the 64-bit range.
+inline TimestampNs SaturatingDifference(TimestampNs later, TimestampNs earlier) {
+  if (const auto difference = CheckedDifference(later, earlier)) return *difference;
+  return later > earlier ? std::numeric_limits<TimestampNs>::max()
+                         : std::numeric_limits<TimestampNs>::min();
+}
 
 inline TimestampNs FromSeconds(double seconds) {
   return static_cast<TimestampNs>(std::llround(seconds * 1e9));

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <limits>
 
 #include "bag/bag_reader.hpp"
 #include "bag/bag_writer.hpp"
@@ -309,6 +310,24 @@ TEST(Mcap, ErrorsNameTheFile) {
   BagWriterOptions options;
   options.storage = "parquet";
   EXPECT_THROW(BagWriter(dir / "new", options), UsageError);
+}
+
+// Found by fuzzing: stamps at both ends of the 64-bit range, whose span the reader computed
+// with a signed overflow.
+TEST(Mcap, StampsTooFarApartAreBadInput) {
+  TempDir dir;
+  for (const std::string storage : {"mcap", "sqlite3"}) {
+    BagWriterOptions options;
+    options.storage = storage;
+    BagWriter writer(dir / storage, options);
+    writer.AddTopic("/notes", "std_msgs/msg/String", TopicQos::kReliable);
+    const std::vector<std::uint8_t> note = {0, 1, 0, 0, 1, 0, 0, 0, 0};
+    writer.Write("/notes", std::numeric_limits<TimestampNs>::min() + 1000, note);
+    writer.Write("/notes", 1040, note);
+    writer.Close();
+    testing::ExpectBadInput([&] { BagReader reader(dir / storage); },
+                            "lie further apart than 64-bit nanoseconds reach");
+  }
 }
 
 TEST(McapCompression, RefusesHostileSizes) {
