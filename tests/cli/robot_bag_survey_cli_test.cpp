@@ -138,6 +138,13 @@ TEST(RobotBagSurveyCli, McapAndARobotsTopicsGiveTheSameResults) {
   const auto info = RunLittermap("info " + Quote(dir / "bag-robot"));
   ASSERT_EQ(info.exit_code, 0) << info.output;
   EXPECT_NE(info.output.find("Storage id:        mcap"), std::string::npos) << info.output;
+  // Which topic each sensor role is read from, before any command needs it.
+  for (const char* role : {"scan: /scan_front (by type)", "odometry: /odometry/filtered (by type)",
+                           "imu: /imu_data (by type)", "colour: /camera/camera/color/image_raw",
+                           "depth: /camera/camera/aligned_depth_to_color/image_raw",
+                           "camera_info: /camera/camera/color/camera_info"}) {
+    EXPECT_NE(info.output.find(role), std::string::npos) << role << "\n" << info.output;
+  }
 
   for (const std::string run : {"sqlite3", "mcap", "robot"}) {
     ASSERT_NO_FATAL_FAILURE(Survey(dir / ("bag-" + run), dir / ("out-" + run)));
