@@ -201,6 +201,7 @@ const std::map<std::string, Setter>& Setters() {
                                  {"on", AlignmentMode::kOn},
                                  {"off", AlignmentMode::kOff}},
                                 [](O& o) -> AlignmentMode& { return o.slam.alignment_mode; })},
+      {"scan_refinement", Set<bool>([](O& o) -> bool& { return o.slam.refine_scans; })},
       {"alignment_pair_radius_m",
        Set<double>([](O& o) -> double& { return o.slam.alignment.pair_radius_m; })},
       {"alignment_normal_gap_per_m",

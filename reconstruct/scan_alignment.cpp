@@ -31,15 +31,19 @@ struct Frame {
   Points2 source_normals;
 };
 
-Frame MakeFrame(const KeyFrame& key_frame, const ScanAlignmentOptions& options) {
+// as_target: with the search tree (a frame only paired as source needs none).
+Frame MakeFrame(const KeyFrame& key_frame, const ScanAlignmentOptions& options,
+                bool as_target = true) {
   Frame frame;
   ScanNormals normals = EstimateScanNormals(key_frame.points_base, options.normals);
   for (std::size_t i : VoxelIndices(key_frame.points_base, options.source_voxel_size_m)) {
     frame.source.push_back(key_frame.points_base[i]);
     frame.source_normals.push_back(normals.normals[i]);
   }
-  frame.matchable = std::move(normals.matchable);
-  frame.target = std::make_unique<IcpTarget>(key_frame.points_base, std::move(normals.normals));
+  if (as_target) {
+    frame.matchable = std::move(normals.matchable);
+    frame.target = std::make_unique<IcpTarget>(key_frame.points_base, std::move(normals.normals));
+  }
   return frame;
 }
 
@@ -67,6 +71,47 @@ std::vector<Pair> SelectPairs(const std::vector<PlanarPose>& poses,
     bool in_visit = false;
     for (std::size_t j = first_revisit; j-- > 0;) {
       const double distance = Distance(poses[i], poses[j]);
+      if (distance > options.pair_radius_m) {
+        in_visit = false;
+        continue;
+      }
+      if (!in_visit) visits.emplace_back(distance, j);
+      if (distance < visits.back().first) visits.back() = {distance, j};
+      in_visit = true;
+    }
+    std::sort(visits.begin(), visits.end());
+    visits.resize(std::min(visits.size(), options.max_revisit_pairs));
+    for (const auto& visit : visits) pairs.push_back({i, visit.second});
+  }
+  return pairs;
+}
+
+// Each free frame with the held frames next to it along the path (the last one before it and the
+// first one after it) and with the nearest held frame of each other visit, the nearest first.
+std::vector<Pair> SelectPairsToHeld(const std::vector<PlanarPose>& poses,
+                                    const std::vector<bool>& fixed,
+                                    const ScanAlignmentOptions& options) {
+  std::vector<std::size_t> held;
+  for (std::size_t j = 0; j < poses.size(); ++j) {
+    if (fixed[j]) held.push_back(j);
+  }
+  std::vector<Pair> pairs;
+  std::size_t next = 0;  // the first held frame after i
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    while (next < held.size() && held[next] <= i) ++next;
+    if (fixed[i]) continue;
+    // held[next - 1] and held[next] bracket i; the visit they are part of is i's own.
+    std::vector<std::pair<double, std::size_t>> visits;  // (distance, nearest held frame)
+    bool in_visit = false;
+    for (std::size_t h = 0; h < held.size(); ++h) {
+      const std::size_t j = held[h];
+      const double distance = Distance(poses[i], poses[j]);
+      const bool neighbour = h + 1 == next || h == next;
+      if (neighbour) {
+        if (distance <= options.pair_radius_m) pairs.push_back({i, j});
+        in_visit = false;
+        continue;
+      }
       if (distance > options.pair_radius_m) {
         in_visit = false;
         continue;
@@ -190,30 +235,31 @@ void ScanAlignmentOptions::Validate() const {
   }
 }
 
-ScanAlignmentResult AlignScans(const std::vector<KeyFrame>& key_frames,
-                               const std::vector<PoseGraphEdge>& odometry,
-                               std::vector<PlanarPose>* poses,
-                               const ScanAlignmentOptions& options) {
-  options.Validate();
-  if (poses->size() != key_frames.size()) {
-    throw InternalError("scan alignment: " + std::to_string(poses->size()) + " poses for " +
-                        std::to_string(key_frames.size()) + " key frames");
+namespace {
+
+void CheckInputs(const std::vector<KeyFrame>& frames, const std::vector<PoseGraphEdge>& odometry,
+                 const std::vector<PlanarPose>& poses) {
+  if (poses.size() != frames.size()) {
+    throw InternalError("scan alignment: " + std::to_string(poses.size()) + " poses for " +
+                        std::to_string(frames.size()) + " key frames");
   }
   for (const PoseGraphEdge& edge : odometry) {
-    if (edge.from >= poses->size() || edge.to >= poses->size()) {
+    if (edge.from >= poses.size() || edge.to >= poses.size()) {
       throw InternalError("scan alignment: odometry edge " + std::to_string(edge.from) + " -> " +
                           std::to_string(edge.to) + " names a missing pose");
     }
   }
+}
+
+// The association rounds over the pairs. Pose 0 is held, and so is every pose i with fixed[i]
+// (`fixed` empty or one flag per pose).
+ScanAlignmentResult Solve(const std::vector<Frame>& frames, const std::vector<Pair>& pairs,
+                          const std::vector<PoseGraphEdge>& odometry,
+                          const std::vector<bool>& fixed, std::vector<PlanarPose>* poses,
+                          const ScanAlignmentOptions& options) {
   ScanAlignmentResult result;
   result.usable = true;
-  if (poses->size() < 2) return result;
-  std::vector<Frame> frames;
-  frames.reserve(key_frames.size());
-  for (const KeyFrame& key_frame : key_frames) frames.push_back(MakeFrame(key_frame, options));
-  const std::vector<Pair> pairs = SelectPairs(*poses, options);
   result.pairs = pairs.size();
-
   std::vector<std::array<double, 3>> parameters(poses->size());
   for (std::size_t i = 0; i < poses->size(); ++i) {
     parameters[i] = {(*poses)[i].x_m, (*poses)[i].y_m, (*poses)[i].theta_rad};
@@ -238,6 +284,11 @@ ScanAlignmentResult AlignScans(const std::vector<KeyFrame>& key_frames,
     }
     if (!problem.HasParameterBlock(parameters[0].data())) break;  // nothing ties pose 0 in
     problem.SetParameterBlockConstant(parameters[0].data());
+    for (std::size_t i = 1; i < fixed.size(); ++i) {
+      if (fixed[i] && problem.HasParameterBlock(parameters[i].data())) {
+        problem.SetParameterBlockConstant(parameters[i].data());
+      }
+    }
     const ceres::Solver::Summary summary =
         SolvePoseProblem(&problem, options.max_iterations_per_round);
     if (!summary.IsSolutionUsable()) {
@@ -252,6 +303,40 @@ ScanAlignmentResult AlignScans(const std::vector<KeyFrame>& key_frames,
     }
   }
   return result;
+}
+
+}  // namespace
+
+ScanAlignmentResult AlignScans(const std::vector<KeyFrame>& key_frames,
+                               const std::vector<PoseGraphEdge>& odometry,
+                               std::vector<PlanarPose>* poses,
+                               const ScanAlignmentOptions& options) {
+  options.Validate();
+  CheckInputs(key_frames, odometry, *poses);
+  if (poses->size() < 2) return {.usable = true};
+  std::vector<Frame> frames;
+  frames.reserve(key_frames.size());
+  for (const KeyFrame& key_frame : key_frames) frames.push_back(MakeFrame(key_frame, options));
+  return Solve(frames, SelectPairs(*poses, options), odometry, {}, poses, options);
+}
+
+ScanAlignmentResult AlignScansToHeld(const std::vector<KeyFrame>& key_frames,
+                                     const std::vector<PoseGraphEdge>& odometry,
+                                     const std::vector<bool>& fixed, std::vector<PlanarPose>* poses,
+                                     const ScanAlignmentOptions& options) {
+  options.Validate();
+  CheckInputs(key_frames, odometry, *poses);
+  if (fixed.size() != poses->size()) {
+    throw InternalError("scan alignment: " + std::to_string(fixed.size()) + " held flags for " +
+                        std::to_string(poses->size()) + " poses");
+  }
+  if (poses->size() < 2) return {.usable = true};
+  std::vector<Frame> frames;
+  frames.reserve(key_frames.size());
+  for (std::size_t i = 0; i < key_frames.size(); ++i) {
+    frames.push_back(MakeFrame(key_frames[i], options, fixed[i]));
+  }
+  return Solve(frames, SelectPairsToHeld(*poses, fixed, options), odometry, fixed, poses, options);
 }
 
 }  // namespace littermap::reconstruct

@@ -55,4 +55,15 @@ ScanAlignmentResult AlignScans(const std::vector<KeyFrame>& key_frames,
                                const std::vector<PoseGraphEdge>& odometry,
                                std::vector<PlanarPose>* poses, const ScanAlignmentOptions& options);
 
+// The same for frames of which some are held (fixed[i]: one flag per frame): every free frame is
+// aligned against held frames only, the held frame before and after it along the path and the
+// nearest held frame of up to max_revisit_pairs other visits within pair_radius_m (before or
+// after it), never against another free frame. So only the held frames need a search tree, and
+// every scan of a run can be refined against its aligned key frames at little cost. The free
+// frames' points are paired, sources like the later frame of an AlignScans pair.
+ScanAlignmentResult AlignScansToHeld(const std::vector<KeyFrame>& frames,
+                                     const std::vector<PoseGraphEdge>& odometry,
+                                     const std::vector<bool>& fixed, std::vector<PlanarPose>* poses,
+                                     const ScanAlignmentOptions& options);
+
 }  // namespace littermap::reconstruct

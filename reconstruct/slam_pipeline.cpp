@@ -40,8 +40,8 @@ void SlamOptions::Validate() const {
     throw UsageError("slam: map_max_range_m must be in (0, 300]");
   }
   if (!(edge_sigma_floor_m > 0) || !(edge_sigma_floor_rad > 0) || !(odometry_sigma_m > 0) ||
-      !(odometry_sigma_rad > 0)) {
-    throw UsageError("slam: edge sigma floors and odometry sigmas must be > 0");
+      !(odometry_sigma_rad > 0) || !(refine_hold_sigma_m > 0) || !(refine_hold_sigma_rad > 0)) {
+    throw UsageError("slam: edge sigma floors, odometry and refinement hold sigmas must be > 0");
   }
   if (!(max_loop_residual_m > 0) || !(max_loop_residual_rad > 0)) {
     throw UsageError("slam: loop residual limits must be > 0");
@@ -410,13 +410,15 @@ void SlamPipeline::Finish() {
     }
     return hits;
   };
-  // Final poses and the extent of the map first, so the grid is allocated once.
+  for (ScanRecord& record : scans_) {
+    record.T_world_base = Compose(frames[record.key_frame].T_world_base, record.T_keyframe_base);
+  }
+  if (options_.refine_scans && quality_.alignment.rounds > 0) RefineScans();
+  // The extent of the map first, so the grid is allocated once.
   Eigen::Vector2d low = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
   Eigen::Vector2d high = -low;
   for (std::size_t i = 0; i < scans_.size(); ++i) {
-    ScanRecord& record = scans_[i];
-    record.T_world_base = Compose(frames[record.key_frame].T_world_base, record.T_keyframe_base);
-    const PlanarPose T_world_laser = Compose(record.T_world_base, T_base_laser_);
+    const PlanarPose T_world_laser = Compose(scans_[i].T_world_base, T_base_laser_);
     for (const Eigen::Vector2d& p : hits_of(i)) {
       low = low.cwiseMin(p);
       high = high.cwiseMax(p);
@@ -487,6 +489,35 @@ void SlamPipeline::AlignKeyFrames() {
   quality_.alignment =
       AlignScans(map_.key_frames(), KeyFrameOdometry(), &poses, options_.alignment);
   if (quality_.alignment.rounds > 0) map_.SetPoses(poses);
+}
+
+void SlamPipeline::RefineScans() {
+  std::vector<KeyFrame> frames(scans_.size());
+  std::vector<PlanarPose> poses(scans_.size());
+  std::vector<bool> held(scans_.size(), false);
+  for (const KeyFrame& key_frame : map_.key_frames()) held[key_frame.scan_index] = true;
+  std::vector<PoseGraphEdge> holds;
+  const Eigen::Matrix3d hold =
+      DiagonalInformation(options_.refine_hold_sigma_m, options_.refine_hold_sigma_rad);
+  for (std::size_t i = 0; i < scans_.size(); ++i) {
+    KeyFrame& frame = frames[i];
+    frame.scan_index = i;
+    frame.stamp_ns = scans_[i].stamp_ns;
+    frame.T_world_base = poses[i] = scans_[i].T_world_base;
+    frame.points_base.reserve(map_points_base_[i].size());
+    for (const MapPoint& point : map_points_base_[i]) {
+      frame.points_base.emplace_back(point.x_cm / 100.0, point.y_cm / 100.0);
+    }
+    if (i > 0) holds.push_back({i - 1, i, Between(poses[i - 1], poses[i]), hold, false});
+  }
+  quality_.refinement = AlignScansToHeld(frames, holds, held, &poses, options_.alignment);
+  if (quality_.refinement.rounds == 0) return;
+  for (std::size_t i = 0; i < scans_.size(); ++i) {
+    ScanRecord& record = scans_[i];
+    record.T_world_base = poses[i];
+    record.T_keyframe_base =
+        Between(map_.key_frames()[record.key_frame].T_world_base, record.T_world_base);
+  }
 }
 
 std::vector<std::pair<TimestampNs, PlanarPose>> SlamPipeline::KeyFramePoses() const {

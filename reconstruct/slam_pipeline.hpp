@@ -71,6 +71,15 @@ struct SlamOptions {
   double max_final_loop_chi2 = 7.81;
   AlignmentMode alignment_mode = AlignmentMode::kAuto;
   ScanAlignmentOptions alignment;
+  // Once the key frames are aligned, every scan is aligned the same way against the scans before
+  // it and those of earlier visits, the key frames held where their alignment put them: a scan
+  // between two key frames then lies on the walls, not only where the tracker's match against the
+  // local map left it. Each scan is held to its neighbour by its tracked step with these sigmas
+  // (weak beside the walls: 0.02 to 1 m gave the same relation errors, to 0.1 mm, on the raw
+  // CARMEN logs).
+  bool refine_scans = true;
+  double refine_hold_sigma_m = 0.05;
+  double refine_hold_sigma_rad = 0.02;
   void Validate() const;
 };
 
@@ -126,7 +135,8 @@ struct SlamQuality {
   std::size_t camera_loops_found = 0;
   std::size_t camera_loops_accepted = 0;
   std::size_t camera_loops_rejected = 0;
-  ScanAlignmentResult alignment;  // the final scan alignment, if it ran
+  ScanAlignmentResult alignment;   // the final scan alignment, if it ran
+  ScanAlignmentResult refinement;  // of every scan (SlamOptions::refine_scans), if it ran
 };
 
 class SlamPipeline {
@@ -173,6 +183,9 @@ class SlamPipeline {
   // the laser, which the alignment brings in itself); otherwise the pose graph's edge, which
   // holds what the tracker matched in the scans between them, scans the alignment does not see.
   std::vector<PoseGraphEdge> KeyFrameOdometry() const;
+  // Every scan aligned with the key frames held (SlamOptions::refine_scans); scans_' final poses
+  // move.
+  void RefineScans();
 
   SlamOptions options_;
   PlanarPose T_base_laser_;

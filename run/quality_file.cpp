@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -83,6 +84,7 @@ Json SlamJson(const ReconstructionQuality& q) {
   json["optimisations"] = q.optimisations;
   json["final_cost"] = q.final_cost;
   if (q.scan_alignment) json["scan_alignment"] = ScanAlignmentJson(*q.scan_alignment);
+  if (q.scan_refinement) json["scan_refinement"] = ScanAlignmentJson(*q.scan_refinement);
   if (q.rgbd) json["rgbd"] = RgbdJson(*q.rgbd);
   json["run_time_s"] = q.run_time_s;
   json["scans_per_s"] = q.scans_per_s;
@@ -111,8 +113,12 @@ void ReadNested(const Json& json, ReconstructionQuality& q) {
     Read(*l, "loops_accepted", q.landmarks.loops_accepted);
     Read(*l, "loops_rejected", q.landmarks.loops_rejected);
   }
-  if (const Json* a = Object(json, "scan_alignment")) {
-    ScanAlignmentQuality& s = q.scan_alignment.emplace();
+  for (const auto& [key, field] :
+       {std::pair{"scan_alignment", &ReconstructionQuality::scan_alignment},
+        std::pair{"scan_refinement", &ReconstructionQuality::scan_refinement}}) {
+    const Json* a = Object(json, key);
+    if (a == nullptr) continue;
+    ScanAlignmentQuality& s = (q.*field).emplace();
     Read(*a, "pairs", s.pairs);
     Read(*a, "pairs_matched", s.pairs_matched);
     Read(*a, "correspondences", s.correspondences);

@@ -72,6 +72,7 @@ struct ReconstructionQuality {
   std::size_t optimisations = 0;
   double final_cost = 0;
   std::optional<ScanAlignmentQuality> scan_alignment;
+  std::optional<ScanAlignmentQuality> scan_refinement;  // every scan against the key frames
   std::optional<RgbdQuality> rgbd;
   // Visual-odometry runs:
   std::size_t frames = 0;

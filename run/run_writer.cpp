@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <optional>
 
 #include "bag/tum_trajectory.hpp"
 #include "core/error.hpp"
@@ -100,11 +101,13 @@ ReconstructionQuality SlamRunQuality(const SlamQuality& quality, const Reconstru
                  quality.landmark_loops_rejected};
   q.optimisations = quality.optimisations;
   q.final_cost = quality.final_cost;
-  const ScanAlignmentResult& a = quality.alignment;
-  if (a.rounds > 0) {
-    q.scan_alignment = ScanAlignmentQuality{a.pairs,  a.pairs_matched, a.correspondences,
-                                            a.rounds, a.initial_cost,  a.final_cost};
-  }
+  const auto alignment = [](const ScanAlignmentResult& a) -> std::optional<ScanAlignmentQuality> {
+    if (a.rounds == 0) return std::nullopt;
+    return ScanAlignmentQuality{a.pairs,  a.pairs_matched, a.correspondences,
+                                a.rounds, a.initial_cost,  a.final_cost};
+  };
+  q.scan_alignment = alignment(quality.alignment);
+  q.scan_refinement = alignment(quality.refinement);
   if (rgbd != nullptr) {
     const RgbdTrackerStats& stats = rgbd->stats();
     q.rgbd = RgbdQuality{stats.frames,

@@ -1,8 +1,8 @@
 // Real data: CARMEN logs from ../shared/datasets/carmen imported with seeded odometry noise
 // (datasets/README.md). ICP on real consecutive scans, and the whole pipeline on ACES and the
 // Intel lab against the corrected reference (each log reconstructed here once per option set;
-// the CLI tests of the same logs do not reconstruct them again). A missing data set fails these
-// tests.
+// the CLI tests of the same logs do not reconstruct them again), and the raw CSAIL log against
+// the benchmark's verified relations. A missing data set fails these tests.
 
 #include <cmath>
 #include <filesystem>
@@ -14,7 +14,10 @@
 #include <gtest/gtest.h>
 
 #include "bag/tum_trajectory.hpp"
+#include "eval/pose_relations.hpp"
 #include "eval/trajectory_metrics.hpp"
+#include "importers/carmen_importer.hpp"
+#include "importers/carmen_log.hpp"
 #include "reconstruct/icp_matcher.hpp"
 #include "reconstruct/reconstruction.hpp"
 #include "reconstruct/slam_pipeline.hpp"
@@ -140,6 +143,40 @@ TEST(CarmenSlam, ScanAlignmentBringsTheIntelLabCloserToTheReference) {
   }
   EXPECT_LT(maps[0].occupied_cells, 0.95 * static_cast<double>(maps[1].occupied_cells));
   EXPECT_GT(maps[2].occupied_cells, 2 * maps[1].occupied_cells);
+}
+
+// The raw MIT CSAIL log with the robot's own odometry, graded by the benchmark's verified
+// relations (Kuemmerle et al. 2009), not by another SLAM system's poses.
+TEST(CarmenSlam, CsailRawWholeLogBeatsCartographerOnTheVerifiedRelations) {
+  testing::TempDir dir;
+  const auto log = std::filesystem::path(LITTERMAP_DATASETS_DIR) / "carmen-raw" / "csail.clf.gz";
+  ASSERT_TRUE(std::filesystem::exists(log)) << "missing data set " << log;
+  importers::ImportCarmenLog(log, dir / "bag");
+  std::vector<double> stamps_s;
+  for (const auto& scan : importers::ReadCarmenLog(log).scans) stamps_s.push_back(scan.timestamp_s);
+  const auto relations = eval::ReadPoseRelations(log.parent_path() / "csail.relations");
+  const auto grade = [&](const ReconstructionOptions& options) {
+    std::vector<std::string> warnings;
+    SlamPipeline pipeline(options.slam, ReadLaserExtrinsic(dir / "bag", options, &warnings));
+    ReconstructBag(dir / "bag", options, &pipeline, {});
+    std::vector<PlanarPose> trajectory;
+    for (const ScanRecord& scan : pipeline.scans()) trajectory.push_back(scan.T_world_base);
+    return std::pair{eval::EvaluatePoseRelations(trajectory, stamps_s, relations, {}),
+                     pipeline.quality()};
+  };
+  ReconstructionOptions unrefined;
+  unrefined.slam.refine_scans = false;
+  const auto [before, before_quality] = grade(unrefined);
+  const auto [after, after_quality] = grade({});
+  EXPECT_EQ(before_quality.refinement.rounds, 0);
+  EXPECT_EQ(after_quality.refinement.rounds, 4);
+  ASSERT_EQ(after.used, 1172u) << "every relation has both ends in the raw log";
+  // Measured: 0.0277 m without the scan refinement, 0.0268 m with it; Cartographer's published
+  // figure is 0.032 m. No wrong loop: no relation off by more than half a metre (the largest is
+  // 0.30 m).
+  EXPECT_LE(after.component.translation_m.mean, 0.032);
+  EXPECT_LT(after.component.translation_m.mean, before.component.translation_m.mean);
+  EXPECT_EQ(after.component.over_large_error, 0u);
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // The final scan alignment on synthetic scenes with known poses: drift is taken out against the
 // scans, a corridor's open direction is left to the odometry, the two sides of a wall are not
-// paired, and bad input is refused.
+// paired, scans between held key frames are brought onto their walls, and bad input is refused.
 
 #include "reconstruct/scan_alignment.hpp"
 
@@ -133,6 +133,45 @@ TEST(ScanAlignment, TheTwoSidesOfAWallAreNotPaired) {
   // Paired, the far side would pull the second pose 10 cm towards the first.
   EXPECT_EQ(result.pairs_matched, 0u);
   EXPECT_NEAR(poses[1].y_m, 1.1, 1e-6);
+}
+
+TEST(ScanAlignment, ScansBetweenHeldKeyFramesLandOnTheirWalls) {
+  const auto room = testing::Room();
+  const std::vector<PlanarPose> truth = LoopAroundThePillar();
+  // Every fourth pose is a key frame, held where it truly is; the scans between are off by up to
+  // 4 cm and 0.6 degrees, as a tracker's match against a local map leaves them.
+  std::vector<bool> held(truth.size(), false);
+  std::vector<PlanarPose> poses = truth;
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    held[i] = i % 4 == 0;
+    if (held[i]) continue;
+    poses[i].x_m += (i % 2 == 0 ? 0.04 : -0.03);
+    poses[i].y_m += (i % 3 == 0 ? -0.04 : 0.02);
+    poses[i].theta_rad += (i % 2 == 0 ? 0.6 : -0.4) * kDeg;
+  }
+  ASSERT_GT(MaxError(poses, truth), 0.04);
+  const std::vector<PlanarPose> given = poses;
+  // Held to their neighbours by the (wrong) steps between the given poses, weakly.
+  const ScanAlignmentResult result = AlignScansToHeld(
+      KeyFramesSeenIn(room, truth), Odometry(given, 0.05, 2 * kDeg), held, &poses, {});
+  ASSERT_TRUE(result.usable);
+  EXPECT_EQ(result.rounds, 4);
+  // Each free scan with the held frames before and after it, and revisits of other key frames.
+  EXPECT_GE(result.pairs_matched, 2 * 18u);
+  EXPECT_LT(result.final_cost, result.initial_cost);
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    if (held[i]) {
+      EXPECT_EQ(poses[i].x_m, given[i].x_m) << i;
+      EXPECT_NEAR(WrapAngle(poses[i].theta_rad - given[i].theta_rad), 0, 1e-12) << i;
+    }
+  }
+  // Noiseless scans: on the truth to a few millimetres, whatever the steps held them to.
+  EXPECT_LT(MaxError(poses, truth), 0.005);
+  EXPECT_LT(MaxHeadingError(poses, truth), 0.1 * kDeg);
+
+  std::vector<bool> short_flags(3, true);
+  EXPECT_THROW(AlignScansToHeld(KeyFramesSeenIn(room, truth), {}, short_flags, &poses, {}),
+               InternalError);
 }
 
 TEST(ScanAlignment, BadInputIsRefused) {

@@ -58,6 +58,14 @@ constexpr const char* kSlamText = R"json({
     "initial_cost": 45296.482669532525,
     "final_cost": 21272.63493199213
   },
+  "scan_refinement": {
+    "pairs": 40,
+    "pairs_matched": 38,
+    "correspondences": 1520,
+    "rounds": 4,
+    "initial_cost": 812.5,
+    "final_cost": 640.25
+  },
   "run_time_s": 2.356362464,
   "scans_per_s": 386.1884637456184,
   "warnings": [
@@ -148,6 +156,9 @@ TEST(QualityFile, ReadsEveryFieldOfASlamRun) {
   ASSERT_TRUE(q->scan_alignment.has_value());
   EXPECT_EQ(q->scan_alignment->rounds, 4);
   EXPECT_DOUBLE_EQ(q->scan_alignment->initial_cost, 45296.482669532525);
+  ASSERT_TRUE(q->scan_refinement.has_value());
+  EXPECT_EQ(q->scan_refinement->pairs_matched, 38u);
+  EXPECT_DOUBLE_EQ(q->scan_refinement->final_cost, 640.25);
   EXPECT_FALSE(q->rgbd.has_value());
   EXPECT_DOUBLE_EQ(q->scans_per_s, 386.1884637456184);
   ASSERT_EQ(q->warnings.size(), 1u);
@@ -192,6 +203,7 @@ TEST(QualityFile, ReadsMissingOrMistypedKeysAsZero) {
   EXPECT_EQ(q->warnings, std::vector<std::string>{"kept"});
   EXPECT_EQ(q->landmarks.in_graph, 2u);
   EXPECT_FALSE(q->scan_alignment.has_value());
+  EXPECT_FALSE(q->scan_refinement.has_value());
   EXPECT_FALSE(QualityFromJson("[1, 2]").has_value());
   EXPECT_FALSE(QualityFromJson("{\"scans\": ").has_value());
   EXPECT_FALSE(QualityFromJson("").has_value());
