@@ -53,6 +53,7 @@ struct BagReader::Impl {
   std::vector<std::string> filter;
   std::vector<std::uint64_t> next_index;  // per topic
   std::vector<std::string> warnings;
+  std::vector<std::string> damage;  // also in warnings
   StampSource stamp_source = StampSource::kHeader;
   StampAgreement stamp_agreement;
 
@@ -196,7 +197,12 @@ void BagReader::Impl::StartCursors() {
 
 void BagReader::Impl::CollectWarnings() {
   for (auto& file : files) {
-    for (std::string& warning : file.reader->TakeWarnings()) warnings.push_back(std::move(warning));
+    // A damaged chunk is seen when the file is indexed and again when it is read: once is enough.
+    for (std::string& warning : file.reader->TakeWarnings()) {
+      if (std::find(damage.begin(), damage.end(), warning) != damage.end()) continue;
+      damage.push_back(warning);
+      warnings.push_back(std::move(warning));
+    }
   }
 }
 
@@ -236,6 +242,8 @@ bool BagReader::metadata_rebuilt() const { return impl_->rebuilt; }
 const std::filesystem::path& BagReader::directory() const { return impl_->directory; }
 
 const std::vector<std::string>& BagReader::warnings() const { return impl_->warnings; }
+
+const std::vector<std::string>& BagReader::damage() const { return impl_->damage; }
 
 const TopicInfo& BagReader::RequireTopic(const std::string& name, const std::string& role) const {
   const TopicInfo* topic = impl_->info.FindTopic(name);

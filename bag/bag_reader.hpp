@@ -43,6 +43,8 @@ class BagReader {
   // Damage read past so far, each naming file and offset: a corrupt MCAP chunk whose messages
   // were skipped, a recording cut off mid-record. Grows as Next() reads on.
   const std::vector<std::string>& warnings() const;
+  // Of the warnings, the damage alone (not the stamp disagreements), each reported once.
+  const std::vector<std::string>& damage() const;
   // The topic's metadata. Throws BadInputError "BAG: no ROLE topic NAME" when the bag lacks it.
   const TopicInfo& RequireTopic(const std::string& name, const std::string& role) const;
 

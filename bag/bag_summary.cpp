@@ -57,6 +57,7 @@ BagSummary SummariseBag(const std::filesystem::path& bag, const BagSummaryOption
     const VerifyResult verified = VerifyMessages(reader, progress);
     for (const std::string& warning : verified.warnings) Warn(warn, warning);
     summary.verified_message_count = verified.decoded_messages;
+    summary.damage = verified.damage;
   }
   summary.path = reader.directory().string();
   summary.info = reader.info();
@@ -101,6 +102,7 @@ std::string ToJson(const BagSummary& summary) {
   }
   if (summary.verified_message_count) {
     json["verified_message_count"] = *summary.verified_message_count;
+    json["damage"] = summary.damage;
   }
   return json.dump(2);
 }
@@ -137,6 +139,9 @@ std::string ToText(const BagSummary& summary) {
   if (summary.verified_message_count) {
     text += Format("Verified:          %llu messages decode\n",
                    static_cast<unsigned long long>(*summary.verified_message_count));
+    for (std::size_t i = 0; i < summary.damage.size(); ++i) {
+      text += (i ? kIndent : "Damaged:           ") + summary.damage[i] + "\n";
+    }
   }
   return text;
 }

@@ -8,6 +8,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "bag/bag_info.hpp"
 #include "core/progress.hpp"
@@ -26,6 +27,7 @@ struct BagSummary {
   std::uint64_t size_bytes = 0;   // of the database files
   bool metadata_rebuilt = false;  // metadata.yaml was missing or out of date when opened
   std::optional<std::uint64_t> verified_message_count;  // with verify: messages that decoded
+  std::vector<std::string> damage;  // with verify: damage read past, naming file and offset
 };
 
 // Opens the bag directory (or one .db3 file). Warns first when its metadata.yaml is missing or
@@ -39,7 +41,7 @@ BagSummary SummariseBag(const std::filesystem::path& bag, const BagSummaryOption
 // schema_version, size_bytes, files, message_count, start_ns, end_ns, duration_s, start_utc,
 // end_utc, metadata_rebuilt, topics[] (name, type, serialization_format, message_count),
 // sensor_roles (role -> found, and topic or candidates; bag/sensor_roles.hpp) and, when
-// verified, verified_message_count.
+// verified, verified_message_count and damage[].
 std::string ToJson(const BagSummary& summary);
 
 // The `ros2 bag info` layout and which topic fills each sensor role, every line ending in "\n".

@@ -21,6 +21,7 @@ VerifyResult VerifyMessages(BagReader& reader, const ProgressCallback& progress)
     }
   }
   result.warnings = stream.warnings();
+  result.damage = reader.damage();
   return result;
 }
 

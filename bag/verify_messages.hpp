@@ -14,6 +14,9 @@ namespace littermap::bag {
 struct VerifyResult {
   std::uint64_t decoded_messages = 0;  // messages of known types, all of which decoded
   std::vector<std::string> warnings;   // one per topic of a type littermap does not use
+  // Damage read past (BagReader::damage): a corrupt MCAP chunk, a cut-off file, each naming file
+  // and offset. Their messages were not decoded; the rest was.
+  std::vector<std::string> damage;
 };
 
 // Decodes every message from the reader's current position, reporting progress ("verifying")

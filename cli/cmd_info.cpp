@@ -6,6 +6,7 @@
 
 #include "bag/bag_summary.hpp"
 #include "cli/cli_context.hpp"
+#include "core/error.hpp"
 
 namespace littermap::cli {
 namespace {
@@ -22,6 +23,13 @@ void RunInfo(const InfoArguments& arguments, CliContext& context) {
                         [&context](const std::string& warning) { context.Warn(warning); });
   context.FinishProgress();
   std::fputs((arguments.json ? bag::ToJson(summary) + "\n" : bag::ToText(summary)).c_str(), stdout);
+  // The rest of the bag was read and reported; the recording is still damaged.
+  if (!summary.damage.empty()) {
+    throw BadInputError(summary.damage.front() +
+                        (summary.damage.size() > 1
+                             ? " (and " + std::to_string(summary.damage.size() - 1) + " more)"
+                             : ""));
+  }
 }
 
 }  // namespace
@@ -35,7 +43,8 @@ void RegisterInfoCommand(CLI::App& app, CliContext& context) {
   info->add_flag("--reindex", arguments->options.reindex,
                  "Rewrite metadata.yaml from the database (after an interrupted recording)");
   info->add_flag("--verify", arguments->options.verify,
-                 "Decode every message; a damaged one is an error naming topic and index");
+                 "Decode every message; a damaged one is an error naming topic and index, damaged "
+                 "storage (an MCAP chunk) one naming file and offset");
   info->callback([arguments, &context] {
     context.run = [arguments, &context] { RunInfo(*arguments, context); };
   });

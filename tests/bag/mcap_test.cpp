@@ -193,6 +193,14 @@ TEST(Mcap, DamagedChunkIsSkippedAndNamed) {
                                       ": chunk is damaged"),
             std::string::npos)
       << reader.warnings()[0];
+  EXPECT_EQ(reader.damage(), reader.warnings());
+
+  // Reopened without metadata.yaml (the counts rebuilt from the file), it is still reported once.
+  std::filesystem::remove(dir / "run" / "metadata.yaml");
+  BagReader again(dir / "run");
+  while (again.Next()) {
+  }
+  EXPECT_EQ(again.damage().size(), 1u);
 }
 
 TEST(Mcap, ChecksumsAreCheckedWhenVerifying) {

@@ -119,6 +119,43 @@ TEST(InfoCli, VerifyNamesTheDamagedMessageAndExitsTwo) {
   const auto ok = testing::RunLittermap("info --verify --json " + (good / "bag").string());
   ASSERT_EQ(ok.exit_code, 0) << ok.output;
   EXPECT_EQ(nlohmann::json::parse(ok.output).at("verified_message_count"), 5);
+  EXPECT_EQ(nlohmann::json::parse(ok.output).at("damage"), nlohmann::json::array());
+}
+
+// A damaged MCAP chunk: the rest is verified and shown, the chunk named by file and offset, and
+// the recording is refused (exit 2), whether or not the file has its summary.
+TEST(InfoCli, VerifyNamesADamagedMcapChunkAndExitsTwo) {
+  testing::TempDir dir;
+  {
+    bag::BagWriterOptions options;
+    options.storage = "mcap";
+    options.mcap.chunk_size_bytes = 512;
+    bag::BagWriter writer(dir / "bag", options);
+    writer.AddTopic<msg::String>("/notes", bag::TopicQos::kReliable);
+    for (int i = 0; i < 200; ++i) {
+      writer.WriteMessage("/notes", 2'000'000'000 + i * 10'000'000LL,
+                          msg::String{"note " + std::to_string(i)});
+    }
+  }
+  const auto file = dir / "bag" / "bag_0.mcap";
+  std::string bytes;
+  {
+    std::ifstream in(file, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::size_t middle = bytes.size() / 2;
+  for (std::size_t i = 0; i < 16; ++i)
+    bytes[middle + i] = static_cast<char>(bytes[middle + i] ^ 0x5A);
+  std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+
+  for (const bool without_metadata : {false, true}) {
+    if (without_metadata) std::filesystem::remove(dir / "bag" / "metadata.yaml");
+    const auto result = RunLittermap("info --verify " + (dir / "bag").string());
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_NE(result.output.find("Damaged:           "), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("bag_0.mcap: offset "), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("messages decode"), std::string::npos) << result.output;
+  }
 }
 
 }  // namespace
