@@ -152,6 +152,38 @@ TEST(Mcap, WithoutSummaryOrMetadataTheScanReadsTheSame) {
   ExpectSameMessages(reader, expected);
 }
 
+// A recording split into two files, as rosbag2 splits one (bag_0.mcap, bag_1.mcap), with and
+// without its metadata.yaml: read as one bag, in time order.
+TEST(Mcap, SplitFilesReadAsOneBag) {
+  TempDir dir;
+  // The two files hold messages of the same times: the merge interleaves them.
+  WriteBag(dir / "a", McapCompression::kZstd);
+  WriteBag(dir / "b", McapCompression::kLz4);
+  std::filesystem::create_directories(dir / "bag");
+  std::filesystem::rename(OnlyFile(dir / "a"), dir / "bag" / "bag_0.mcap");
+  std::filesystem::rename(OnlyFile(dir / "b"), dir / "bag" / "bag_1.mcap");
+  {
+    BagReader reader(dir / "bag");
+    ASSERT_EQ(reader.info().files.size(), 2u);
+    EXPECT_EQ(reader.info().message_count, 600u);
+    EXPECT_TRUE(reader.metadata_rebuilt());
+    std::uint64_t read = 0;
+    TimestampNs last = 0;
+    while (auto message = reader.Next()) {
+      EXPECT_GE(message->timestamp_ns, last);
+      last = message->timestamp_ns;
+      ++read;
+    }
+    EXPECT_EQ(read, 600u);
+  }
+  BagReader reader(dir / "bag");
+  WriteMetadataYaml(dir / "bag" / "metadata.yaml", reader.info());
+  BagReader with_metadata(dir / "bag");
+  EXPECT_FALSE(with_metadata.metadata_rebuilt());
+  EXPECT_EQ(with_metadata.info().files.size(), 2u);
+  EXPECT_EQ(with_metadata.info().message_count, 600u);
+}
+
 TEST(Mcap, CutOffFileReadsUpToTheCutWithAWarning) {
   TempDir dir;
   const auto expected = WriteBag(dir / "run", McapCompression::kLz4);
