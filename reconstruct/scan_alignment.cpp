@@ -56,6 +56,34 @@ struct Pair {
   std::size_t target = 0;
 };
 
+// Visits: runs of consecutive frames within the pair radius, offered one by one in path order
+// (either direction), each remembered by its nearest frame.
+class Visits {
+ public:
+  explicit Visits(double radius_m) : radius_m_(radius_m) {}
+  void Offer(double distance_m, std::size_t frame) {
+    if (distance_m > radius_m_) {
+      Break();
+      return;
+    }
+    if (!in_visit_) visits_.emplace_back(distance_m, frame);
+    if (distance_m < visits_.back().first) visits_.back() = {distance_m, frame};
+    in_visit_ = true;
+  }
+  void Break() { in_visit_ = false; }  // the next frame offered starts another visit
+  // Pairs `source` with the nearest frame of each of up to `count` visits, the nearest first.
+  void PairNearest(std::size_t source, std::size_t count, std::vector<Pair>* pairs) {
+    std::sort(visits_.begin(), visits_.end());
+    visits_.resize(std::min(visits_.size(), count));
+    for (const auto& visit : visits_) pairs->push_back({source, visit.second});
+  }
+
+ private:
+  double radius_m_;
+  bool in_visit_ = false;
+  std::vector<std::pair<double, std::size_t>> visits_;  // (distance, nearest frame)
+};
+
 // Each key frame with its nearest predecessors, and with the nearest key frame of each earlier
 // visit (a run of consecutive key frames within the radius), the nearest visits first.
 std::vector<Pair> SelectPairs(const std::vector<PlanarPose>& poses,
@@ -67,21 +95,9 @@ std::vector<Pair> SelectPairs(const std::vector<PlanarPose>& poses,
     for (std::size_t j = i; j-- > first_revisit;) {
       if (Distance(poses[i], poses[j]) <= options.pair_radius_m) pairs.push_back({i, j});
     }
-    std::vector<std::pair<double, std::size_t>> visits;  // (distance, nearest key frame)
-    bool in_visit = false;
-    for (std::size_t j = first_revisit; j-- > 0;) {
-      const double distance = Distance(poses[i], poses[j]);
-      if (distance > options.pair_radius_m) {
-        in_visit = false;
-        continue;
-      }
-      if (!in_visit) visits.emplace_back(distance, j);
-      if (distance < visits.back().first) visits.back() = {distance, j};
-      in_visit = true;
-    }
-    std::sort(visits.begin(), visits.end());
-    visits.resize(std::min(visits.size(), options.max_revisit_pairs));
-    for (const auto& visit : visits) pairs.push_back({i, visit.second});
+    Visits visits(options.pair_radius_m);
+    for (std::size_t j = first_revisit; j-- > 0;) visits.Offer(Distance(poses[i], poses[j]), j);
+    visits.PairNearest(i, options.max_revisit_pairs, &pairs);
   }
   return pairs;
 }
@@ -100,29 +116,18 @@ std::vector<Pair> SelectPairsToHeld(const std::vector<PlanarPose>& poses,
   for (std::size_t i = 0; i < poses.size(); ++i) {
     while (next < held.size() && held[next] <= i) ++next;
     if (fixed[i]) continue;
-    // held[next - 1] and held[next] bracket i; the visit they are part of is i's own.
-    std::vector<std::pair<double, std::size_t>> visits;  // (distance, nearest held frame)
-    bool in_visit = false;
+    // held[next - 1] and held[next] bracket i: paired directly, and they split i's own visit.
+    Visits visits(options.pair_radius_m);
     for (std::size_t h = 0; h < held.size(); ++h) {
-      const std::size_t j = held[h];
-      const double distance = Distance(poses[i], poses[j]);
-      const bool neighbour = h + 1 == next || h == next;
-      if (neighbour) {
-        if (distance <= options.pair_radius_m) pairs.push_back({i, j});
-        in_visit = false;
-        continue;
+      const double distance = Distance(poses[i], poses[held[h]]);
+      if (h + 1 == next || h == next) {
+        if (distance <= options.pair_radius_m) pairs.push_back({i, held[h]});
+        visits.Break();
+      } else {
+        visits.Offer(distance, held[h]);
       }
-      if (distance > options.pair_radius_m) {
-        in_visit = false;
-        continue;
-      }
-      if (!in_visit) visits.emplace_back(distance, j);
-      if (distance < visits.back().first) visits.back() = {distance, j};
-      in_visit = true;
     }
-    std::sort(visits.begin(), visits.end());
-    visits.resize(std::min(visits.size(), options.max_revisit_pairs));
-    for (const auto& visit : visits) pairs.push_back({i, visit.second});
+    visits.PairNearest(i, options.max_revisit_pairs, &pairs);
   }
   return pairs;
 }
