@@ -100,12 +100,15 @@ TEST(LiveCapture, WarnsWithoutARobotBeforeRefusingBadOptions) {
   EXPECT_FALSE(std::filesystem::exists(dir / "bag"));
 }
 
-TEST(LiveCapture, RecordsAnEmulatedLaserForTheDurationAsked) {
+class LiveCaptureStorage : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(LiveCaptureStorage, RecordsAnEmulatedLaserForTheDurationAsked) {
   testing::ScipEmulatorOptions laser_options;
   laser_options.scan_period_ms = 25;  // 40 Hz
   testing::ScipEmulator laser(testing::ScipEmulator::Link::kTcp, laser_options);
   testing::TempDir dir;
   LiveCaptureOptions options;
+  options.storage = GetParam();
   options.sources.laser_uri = laser.uri();
   options.robot_yaml = std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "robot.yaml";
   options.duration_s = 1.0;
@@ -118,9 +121,14 @@ TEST(LiveCapture, RecordsAnEmulatedLaserForTheDurationAsked) {
   ASSERT_EQ(result.sources.size(), 1u);
   EXPECT_GT(result.sources[0].written, 20u);  // 40 Hz for 1 s, less the connection
   bag::BagReader reader(dir / "bag");
+  EXPECT_EQ(reader.info().storage_identifier, GetParam());
   ASSERT_NE(reader.info().FindTopic("/tf_static"), nullptr);
   EXPECT_EQ(reader.info().FindTopic("/tf_static")->message_count, 1u);
+  ASSERT_NE(reader.info().FindTopic("/scan"), nullptr);
+  EXPECT_EQ(reader.info().FindTopic("/scan")->message_count, result.sources[0].written);
 }
+
+INSTANTIATE_TEST_SUITE_P(Storages, LiveCaptureStorage, ::testing::Values("sqlite3", "mcap"));
 
 TEST(LiveCapture, SummaryHasOneLinePerSource) {
   RecordingResult result;
