@@ -130,6 +130,17 @@ void BagReader::Impl::CountMessages() {
   info.message_count = 0;
   bool any = false;
   TimestampNs first = 0, last = 0;
+  // last - first of the messages in `where`; stamps too far apart for that are refused.
+  const auto span = [](TimestampNs first_ns, TimestampNs last_ns,
+                       const std::filesystem::path& where) {
+    const auto duration = CheckedDifference(last_ns, first_ns);
+    if (!duration) {
+      throw BadInputError(where.string() + ": message stamps from " + std::to_string(first_ns) +
+                          " to " + std::to_string(last_ns) +
+                          " ns lie further apart than 64-bit nanoseconds reach");
+    }
+    return *duration;
+  };
   for (std::size_t i = 0; i < files.size(); ++i) {
     BagFileInfo& file_info = info.files[i];
     file_info.message_count = 0;
@@ -146,27 +157,16 @@ void BagReader::Impl::CountMessages() {
       file_last = file_info.message_count ? std::max(file_last, count.last_ns) : count.last_ns;
       file_info.message_count += count.count;
     }
-    const auto span = [&](TimestampNs first_ns, TimestampNs last_ns) {
-      const auto duration = CheckedDifference(last_ns, first_ns);
-      if (!duration) {
-        throw BadInputError((directory / file_info.relative_path).string() +
-                            ": message stamps from " + std::to_string(first_ns) + " to " +
-                            std::to_string(last_ns) +
-                            " ns lie further apart than 64-bit nanoseconds reach");
-      }
-      return *duration;
-    };
     file_info.starting_time_ns = file_first;
-    file_info.duration_ns = span(file_first, file_last);
+    file_info.duration_ns = span(file_first, file_last, directory / file_info.relative_path);
     if (file_info.message_count == 0) continue;
     first = any ? std::min(first, file_first) : file_first;
     last = any ? std::max(last, file_last) : file_last;
     any = true;
     info.message_count += file_info.message_count;
-    span(first, last);  // the bag's span so far, ending in this file
   }
   info.starting_time_ns = first;
-  info.duration_ns = last - first;  // checked above
+  info.duration_ns = span(first, last, directory);
   for (std::size_t i = 0; i < info.topics.size(); ++i) {
     if (i >= recorded_counts.size() || recorded_counts[i] != info.topics[i].message_count) {
       rebuilt = true;

@@ -256,8 +256,8 @@ void CheckInputs(const std::vector<KeyFrame>& frames, const std::vector<PoseGrap
   }
 }
 
-// The association rounds over the pairs. Pose 0 is held, and so is every pose i with fixed[i]
-// (`fixed` empty or one flag per pose).
+// The association rounds over the pairs, every pose i with fixed[i] held (one flag per pose).
+// A round whose problem holds no held pose has nothing to anchor it: the rounds stop.
 ScanAlignmentResult Solve(const std::vector<Frame>& frames, const std::vector<Pair>& pairs,
                           const std::vector<PoseGraphEdge>& odometry,
                           const std::vector<bool>& fixed, std::vector<PlanarPose>* poses,
@@ -287,13 +287,14 @@ ScanAlignmentResult Solve(const std::vector<Frame>& frames, const std::vector<Pa
       problem.AddResidualBlock(RelativePoseError::Create(edge.T_from_to, edge.information), nullptr,
                                parameters[edge.from].data(), parameters[edge.to].data());
     }
-    if (!problem.HasParameterBlock(parameters[0].data())) break;  // nothing ties pose 0 in
-    problem.SetParameterBlockConstant(parameters[0].data());
-    for (std::size_t i = 1; i < fixed.size(); ++i) {
+    bool anchored = false;
+    for (std::size_t i = 0; i < fixed.size(); ++i) {
       if (fixed[i] && problem.HasParameterBlock(parameters[i].data())) {
         problem.SetParameterBlockConstant(parameters[i].data());
+        anchored = true;
       }
     }
+    if (!anchored) break;
     const ceres::Solver::Summary summary =
         SolvePoseProblem(&problem, options.max_iterations_per_round);
     if (!summary.IsSolutionUsable()) {
@@ -322,7 +323,9 @@ ScanAlignmentResult AlignScans(const std::vector<KeyFrame>& key_frames,
   std::vector<Frame> frames;
   frames.reserve(key_frames.size());
   for (const KeyFrame& key_frame : key_frames) frames.push_back(MakeFrame(key_frame, options));
-  return Solve(frames, SelectPairs(*poses, options), odometry, {}, poses, options);
+  std::vector<bool> first_held(poses->size(), false);
+  first_held[0] = true;
+  return Solve(frames, SelectPairs(*poses, options), odometry, first_held, poses, options);
 }
 
 ScanAlignmentResult AlignScansToHeld(const std::vector<KeyFrame>& key_frames,

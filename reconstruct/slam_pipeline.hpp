@@ -71,12 +71,12 @@ struct SlamOptions {
   double max_final_loop_chi2 = 7.81;
   AlignmentMode alignment_mode = AlignmentMode::kAuto;
   ScanAlignmentOptions alignment;
-  // Once the key frames are aligned, every scan is aligned the same way against the scans before
-  // it and those of earlier visits, the key frames held where their alignment put them: a scan
-  // between two key frames then lies on the walls, not only where the tracker's match against the
-  // local map left it. Each scan is held to its neighbour by its tracked step with these sigmas
-  // (weak beside the walls: 0.02 to 1 m gave the same relation errors, to 0.1 mm, on the raw
-  // CARMEN logs).
+  // Once the key frames are aligned, every other scan is aligned the same way against them, held
+  // where their alignment put them (AlignScansToHeld: the key frame before and after the scan and
+  // those of other visits): a scan between two key frames then lies on the walls, not only where
+  // the tracker's match against the local map left it. Each scan is held to its neighbour by its
+  // tracked step with these sigmas (weak beside the walls: 0.02 to 1 m gave the same relation
+  // errors, to 0.1 mm, on the raw CARMEN logs).
   bool refine_scans = true;
   double refine_hold_sigma_m = 0.05;
   double refine_hold_sigma_rad = 0.02;
