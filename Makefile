@@ -1,7 +1,7 @@
 # littermap: the two commands of the quick start, and a few more.
 #   make demo    install missing packages, build, run the pipeline on the sample
 #   make test    install missing packages, build, run the whole test suite
-#   make check   build, run the unit tier only (no data sets, no littermap binary): about a minute
+#   make check   build, run the unit tier only (no data sets, no littermap binary): under a minute
 #   make bench   build and run the benchmarks (pinned to one core)
 #   make sanitize-test   the unit and data tiers again under AddressSanitizer + UndefinedBehaviorSanitizer
 #   make fuzz    build the libFuzzer targets with clang and run each for FUZZ_SECONDS
