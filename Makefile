@@ -20,6 +20,10 @@ JOBS ?= $(shell nproc)
 DEMO_OUT ?= out/demo
 CMAKE_FLAGS ?=
 MAKEFLAGS += --no-print-directory
+# New build folders use Ninja, which keeps both cores compiling while a library links (the
+# Makefile generator waits for a library before compiling what uses it); a folder configured
+# earlier keeps its generator.
+generator = $(if $(wildcard $(1)/CMakeCache.txt),,-G Ninja)
 
 .PHONY: all deps build demo test check bench sanitize-test fuzz clean
 
@@ -29,7 +33,8 @@ deps:
 	@scripts/install-deps.sh
 
 build: deps
-	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS) >/dev/null
+	@cmake -S . -B $(BUILD_DIR) $(call generator,$(BUILD_DIR)) -DCMAKE_BUILD_TYPE=Release \
+	  $(CMAKE_FLAGS) >/dev/null
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
 demo: build
@@ -46,7 +51,8 @@ bench: build
 
 sanitize-test:
 	@scripts/install-deps.sh --ci
-	@cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=Sanitize -DLITTERMAP_BUILD_BENCH=OFF >/dev/null
+	@cmake -S . -B $(SANITIZE_DIR) $(call generator,$(SANITIZE_DIR)) -DCMAKE_BUILD_TYPE=Sanitize \
+	  -DLITTERMAP_BUILD_BENCH=OFF >/dev/null
 	@cmake --build $(SANITIZE_DIR) -j $(JOBS) --target littermap_tests_unit littermap_tests_data
 	@cd $(SANITIZE_DIR) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	  LSAN_OPTIONS=suppressions=$(CURDIR)/scripts/lsan.supp \
@@ -54,7 +60,7 @@ sanitize-test:
 
 fuzz:
 	@scripts/install-deps.sh --ci
-	@CC=clang CXX=clang++ cmake -S . -B $(FUZZ_DIR) -DLITTERMAP_BUILD_FUZZ=ON \
+	@CC=clang CXX=clang++ cmake -S . -B $(FUZZ_DIR) $(call generator,$(FUZZ_DIR)) -DLITTERMAP_BUILD_FUZZ=ON \
 	  -DLITTERMAP_BUILD_TESTS=OFF -DLITTERMAP_BUILD_BENCH=OFF >/dev/null
 	@cmake --build $(FUZZ_DIR) -j $(JOBS) --target littermap_fuzzers
 	@scripts/fuzz.sh $(FUZZ_DIR) $(FUZZ_SECONDS)

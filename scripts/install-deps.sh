@@ -5,7 +5,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config
+  build-essential cmake ninja-build pkg-config
   libeigen3-dev libopencv-dev libsqlite3-dev zlib1g-dev libpng-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libzstd-dev liblz4-dev
   libgtest-dev libbenchmark-dev libceres-dev libnanoflann-dev ccache
