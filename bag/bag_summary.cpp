@@ -104,7 +104,7 @@ std::string ToJson(const BagSummary& summary) {
     json["verified_message_count"] = *summary.verified_message_count;
     json["damage"] = summary.damage;
   }
-  return json.dump(2);
+  return json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 std::string ToText(const BagSummary& summary) {

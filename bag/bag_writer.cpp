@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <condition_variable>
+#include <exception>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -10,6 +11,7 @@
 
 #include "bag/bag_schema.hpp"
 #include "bag/storage_file.hpp"
+#include "core/failure.hpp"
 
 namespace littermap::bag {
 namespace {
@@ -47,7 +49,7 @@ std::unique_ptr<StorageFileWriter> CreateStorage(const std::filesystem::path& di
       throw UsageError(directory.string() + ": output bag already exists (choose another path)");
     }
   } else if (!std::filesystem::create_directories(directory, error)) {
-    throw InternalError(directory.string() + ": cannot create directory: " + error.message());
+    throw FileFailure(directory, "cannot create directory", error.value());
   }
   std::string name = directory.filename().string();
   if (name.empty()) name = directory.parent_path().filename().string();
@@ -74,15 +76,25 @@ struct BagWriter::Impl {
   }
 
   // Commits on a timer, so a writer that goes quiet still has everything on disk within
-  // commit_interval_ms.
+  // commit_interval_ms. A failed commit (the disk full) is kept for the writer's next call to
+  // throw: an exception leaving this thread would abort the recording process.
   void CommitLoop() {
     std::unique_lock lock(mutex);
     const auto period =
         std::chrono::milliseconds(std::max<std::int64_t>(options.commit_interval_ms / 4, 1));
     while (!stopping) {
       wake.wait_for(lock, period);
-      if (CommitDue()) CommitLocked();
+      if (failure || !CommitDue()) continue;
+      try {
+        CommitLocked();
+      } catch (...) {
+        failure = std::current_exception();
+      }
     }
+  }
+
+  void ThrowIfFailedLocked() const {
+    if (failure) std::rethrow_exception(failure);
   }
 
   BagInfo Summary() const {
@@ -120,6 +132,7 @@ struct BagWriter::Impl {
   std::mutex mutex;
   std::condition_variable wake;
   bool stopping = false;
+  std::exception_ptr failure;  // the committer's failed commit, thrown by the next call
   std::thread committer;
 };
 
@@ -175,6 +188,7 @@ void BagWriter::Write(const std::string& topic, TimestampNs timestamp_ns,
     throw UsageError("bag " + impl_->directory.string() + ": topic '" + topic +
                      "' written before AddTopic()");
   }
+  impl_->ThrowIfFailedLocked();
   TopicState& state = it->second;
   impl_->storage->Write(state.id, timestamp_ns, serialized);
   if (!impl_->uncommitted) {
@@ -193,6 +207,7 @@ void BagWriter::Write(const std::string& topic, TimestampNs timestamp_ns,
 
 void BagWriter::Flush() {
   std::lock_guard lock(impl_->mutex);
+  impl_->ThrowIfFailedLocked();
   impl_->CommitLocked();
 }
 
@@ -208,10 +223,18 @@ void BagWriter::Close() {
   if (impl_->committer.joinable()) impl_->committer.join();
 
   std::lock_guard lock(impl_->mutex);
-  impl_->CommitLocked();
+  // A failed commit (the disk full, now or in the committer) loses what it held; the storage is
+  // still closed over what was committed, so the bag opens and verifies, and the failure is
+  // thrown after that.
+  try {
+    impl_->CommitLocked();
+  } catch (...) {
+    if (!impl_->failure) impl_->failure = std::current_exception();
+  }
   const BagInfo info = impl_->Summary();
   impl_->storage->Close(info);
   WriteMetadataYaml(impl_->directory / "metadata.yaml", info);
+  impl_->ThrowIfFailedLocked();
 }
 
 const std::filesystem::path& BagWriter::directory() const { return impl_->directory; }

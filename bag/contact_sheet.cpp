@@ -1,5 +1,6 @@
 #include "bag/contact_sheet.hpp"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -15,6 +16,7 @@
 #include "bag/message_stream.hpp"
 #include "bag/topics.hpp"
 #include "core/error.hpp"
+#include "core/failure.hpp"
 
 namespace littermap::bag {
 namespace {
@@ -132,7 +134,7 @@ ContactSheetResult WriteContactSheet(const std::filesystem::path& bag,
   cv::Mat sheet;
   cv::vconcat(lines, sheet);
   if (!cv::imwrite(png.string(), sheet)) {
-    throw InternalError(png.string() + ": cannot write the contact sheet");
+    throw FileFailure(png, "cannot write the contact sheet", errno);
   }
   return {static_cast<int>(rows.size()), sheet.cols, sheet.rows};
 }

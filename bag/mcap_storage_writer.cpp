@@ -6,9 +6,11 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 
 #include "bag/mcap_records.hpp"
 #include "bag/storage_file.hpp"
+#include "core/failure.hpp"
 #include "littermap_version.hpp"
 
 namespace littermap::bag {
@@ -21,7 +23,7 @@ class McapStorageWriter : public StorageFileWriter {
   McapStorageWriter(const std::filesystem::path& file, const McapStorageOptions& options)
       : path_(file), options_(options), stream_(std::fopen(file.c_str(), "wbx")) {
     if (stream_ == nullptr) {
-      throw InternalError(file.string() + ": cannot create: " + std::strerror(errno));
+      throw FileFailure(file, "cannot create", errno);
     }
     std::vector<std::uint8_t> header;
     mcap::FieldWriter writer(header);
@@ -30,6 +32,8 @@ class McapStorageWriter : public StorageFileWriter {
     std::vector<std::uint8_t> out(mcap::kMagic.begin(), mcap::kMagic.end());
     mcap::AppendRecord(out, Opcode::kHeader, header);
     Put(out);
+    if (std::fflush(stream_) != 0) Fail("cannot write");
+    synced_position_ = position_;
   }
 
   ~McapStorageWriter() override {
@@ -96,9 +100,30 @@ class McapStorageWriter : public StorageFileWriter {
   void Commit() override {
     CloseChunk();
     if (std::fflush(stream_) != 0 || ::fsync(fileno(stream_)) != 0) Fail("cannot sync");
+    synced_position_ = position_;
   }
 
+  // A write that fails while closing (the disk full) is thrown once the last commit is salvaged.
   void Close(const BagInfo&) override {
+    std::exception_ptr failure;
+    if (!failed_) {
+      try {
+        Finish();
+        return;
+      } catch (...) {
+        if (!failed_) throw;
+        failure = std::current_exception();
+      }
+    }
+    Salvage();
+    if (failure) std::rethrow_exception(failure);
+  }
+
+  const std::filesystem::path& file() const override { return path_; }
+
+ private:
+  // The open chunk, the data end, the summary and the footer.
+  void Finish() {
     CloseChunk();
     std::vector<std::uint8_t> out;
     mcap::FieldWriter data_end(out);
@@ -167,16 +192,45 @@ class McapStorageWriter : public StorageFileWriter {
     stream_ = nullptr;
   }
 
-  const std::filesystem::path& file() const override { return path_; }
-
- private:
   struct IndexEntry {
     std::uint64_t log_time;
     std::uint64_t offset;  // into the chunk's uncompressed records
   };
 
-  [[noreturn]] void Fail(const char* what) const {
-    throw InternalError(path_.string() + ": " + what + ": " + std::strerror(errno));
+  [[noreturn]] void Fail(const char* what) {
+    const int error = errno;
+    failed_ = true;
+    throw FileFailure(path_, what, error);
+  }
+
+  // After a failed write (the disk full): cuts the file back to its last commit, every record of
+  // which is on disk whole, and ends it there with a data end and a footer without summary, which
+  // readers answer by scanning the data. The uncommitted messages are lost, as in a crash; the
+  // file is valid MCAP. The ending takes 50 bytes, fewer than the failed write freed.
+  void Salvage() {
+    std::fflush(stream_);  // fails again; what it wrote beyond the commit is cut off below
+    std::clearerr(stream_);
+    if (::ftruncate(fileno(stream_), static_cast<off_t>(synced_position_)) != 0 ||
+        std::fseek(stream_, static_cast<long>(synced_position_), SEEK_SET) != 0) {
+      Fail("cannot cut the file back to its last commit");
+    }
+    position_ = synced_position_;
+    std::vector<std::uint8_t> out;
+    mcap::FieldWriter data_end(out);
+    data_end.U8(static_cast<std::uint8_t>(Opcode::kDataEnd));
+    data_end.U64(4);
+    data_end.U32(0);
+    std::vector<std::uint8_t> footer;
+    mcap::FieldWriter writer(footer);
+    writer.U64(0);  // no summary section
+    writer.U64(0);
+    writer.U32(0);
+    mcap::AppendRecord(out, Opcode::kFooter, footer);
+    out.insert(out.end(), mcap::kMagic.begin(), mcap::kMagic.end());
+    Put(out);
+    if (std::fflush(stream_) != 0 || ::fsync(fileno(stream_)) != 0) Fail("cannot sync");
+    std::fclose(stream_);
+    stream_ = nullptr;
   }
 
   void Put(std::span<const std::uint8_t> bytes) {
@@ -241,6 +295,8 @@ class McapStorageWriter : public StorageFileWriter {
   McapStorageOptions options_;
   std::FILE* stream_;
   std::uint64_t position_ = 0;
+  std::uint64_t synced_position_ = 0;  // the end of the last commit, on disk whole
+  bool failed_ = false;                // a write failed: Close salvages the last commit
   std::vector<mcap::Schema> schemas_;
   std::vector<mcap::Channel> channels_;
   mcap::Statistics statistics_;

@@ -1,6 +1,8 @@
 #include "bag/message_stream.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 
 namespace littermap::bag {
 namespace {
@@ -29,6 +31,13 @@ void ThrowUndecodable(const BagReader& reader, const BagMessage& message,
                       " (t=" + std::to_string(message.timestamp_ns) + " ns): " + reason);
 }
 
+void ThrowUndecodable(const BagReader& reader, const DecodedMessage& message,
+                      const std::string& reason) {
+  throw BadInputError(reader.directory().string() + ": topic '" + message.topic->name +
+                      "' message #" + std::to_string(message.index) +
+                      " (t=" + std::to_string(message.timestamp_ns) + " ns): " + reason);
+}
+
 std::optional<DecodedMessage> MessageStream::Next() {
   while (auto raw = reader_.Next()) {
     if (raw->topic->serialization_format != "cdr") {
@@ -44,6 +53,16 @@ std::optional<DecodedMessage> MessageStream::Next() {
         warnings_.push_back(name + ": type " + raw->topic->type + " is not used; skipped");
       }
       continue;
+    }
+    if (const auto* scan = std::get_if<msg::LaserScan>(&decoded.message)) {
+      // A scan whose beams have no directions cannot be used: refused like a damaged message
+      // rather than left for the tracker to skip without a word.
+      if (!std::isfinite(scan->angle_min) || !std::isfinite(scan->angle_increment)) {
+        ThrowUndecodable(reader_, *raw,
+                         "LaserScan angle_min " + std::to_string(scan->angle_min) +
+                             " and angle_increment " + std::to_string(scan->angle_increment) +
+                             " give its beams no directions");
+      }
     }
     decoded.topic = raw->topic;
     decoded.timestamp_ns = raw->timestamp_ns;

@@ -47,8 +47,10 @@ class MessageStream {
   std::vector<std::string> warned_topics_;
 };
 
-// Implementation detail shared by the template and the stream.
+// A BadInputError "BAG: topic 'T' message #N (t=… ns): REASON" for a message that cannot be used.
 [[noreturn]] void ThrowUndecodable(const BagReader& reader, const BagMessage& message,
+                                   const std::string& reason);
+[[noreturn]] void ThrowUndecodable(const BagReader& reader, const DecodedMessage& message,
                                    const std::string& reason);
 
 template <typename M>

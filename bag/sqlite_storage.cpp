@@ -188,29 +188,55 @@ class SqliteStorageWriter : public StorageFileWriter {
     insert_->Bind(1, timestamp_ns);
     insert_->Bind(2, topic_id);
     insert_->BindBlob(3, serialized);
-    insert_->Run();
+    try {
+      insert_->Run();
+    } catch (...) {
+      Abandon();
+      throw;
+    }
   }
 
   void Commit() override {
     if (!in_transaction_) return;
-    database_.Execute("COMMIT");
+    try {
+      database_.Execute("COMMIT");
+    } catch (...) {
+      Abandon();
+      throw;
+    }
     in_transaction_ = false;
   }
 
   void Close(const BagInfo& info) override {
     Commit();
-    auto metadata =
-        database_.Prepare("INSERT INTO metadata (metadata_version, metadata) VALUES (?, ?)");
-    metadata.Bind(1, std::int64_t{info.version});
-    metadata.Bind(2, MetadataYamlText(info));
-    metadata.Run();
-    // A finished bag is one self-contained file: it then opens read-only from anywhere.
-    database_.Execute("PRAGMA journal_mode=DELETE");
+    // The metadata row (metadata.yaml holds the same) and the single file (a WAL bag reads as
+    // well) are conveniences: on a full disk they are left out, the messages committed stay.
+    try {
+      auto metadata =
+          database_.Prepare("INSERT INTO metadata (metadata_version, metadata) VALUES (?, ?)");
+      metadata.Bind(1, std::int64_t{info.version});
+      metadata.Bind(2, MetadataYamlText(info));
+      metadata.Run();
+      // A finished bag is one self-contained file: it then opens read-only from anywhere.
+      database_.Execute("PRAGMA journal_mode=DELETE");
+    } catch (const Error& e) {
+      if (e.kind() != ErrorKind::kEnvironment) throw;
+    }
   }
 
   const std::filesystem::path& file() const override { return database_.file(); }
 
  private:
+  // After a failed insert or commit (the disk full): the open transaction is given up, so the
+  // database holds exactly what was committed and the writer can still close it.
+  void Abandon() {
+    try {
+      database_.Execute("ROLLBACK");
+    } catch (const Error&) {  // SQLite rolled it back already
+    }
+    in_transaction_ = false;
+  }
+
   SqliteDatabase database_;
   std::optional<SqliteStatement> insert_;
   bool in_transaction_ = false;

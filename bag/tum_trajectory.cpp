@@ -1,6 +1,7 @@
 #include "bag/tum_trajectory.hpp"
 
 #include <array>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -8,6 +9,7 @@
 #include <memory>
 
 #include "core/error.hpp"
+#include "core/failure.hpp"
 #include "core/text_lines.hpp"
 
 namespace littermap::bag {
@@ -146,7 +148,7 @@ void WriteTumTrajectory(const std::filesystem::path& path, std::span<const Stamp
                             q.z(), q.w()) > 0;
   }
   ok = std::fclose(file.release()) == 0 && ok;
-  if (!ok) throw InternalError("writing " + path.string() + " failed (disk full?)");
+  if (!ok) throw FileFailure(path, "cannot write", errno);
 }
 
 }  // namespace littermap::bag

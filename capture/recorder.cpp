@@ -13,6 +13,7 @@
 #include "bag/topics.hpp"
 #include "capture/byte_stream.hpp"
 #include "core/error.hpp"
+#include "core/failure.hpp"
 
 namespace littermap::capture {
 namespace {
@@ -382,6 +383,7 @@ RecordingResult Record(const std::filesystem::path& bag_path,
     } catch (const std::exception& error) {
       result.stop = RecordingStop::kWriteFailed;
       result.stop_reason = std::string("writing the bag failed: ") + error.what();
+      result.failure_kind = KindOf(error);
       return false;
     }
   };

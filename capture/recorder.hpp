@@ -27,6 +27,7 @@
 #include "bag/bag_writer.hpp"
 #include "bag/image_codec.hpp"
 #include "capture/sensor_source.hpp"
+#include "core/error.hpp"
 
 namespace littermap::capture {
 
@@ -81,6 +82,9 @@ enum class RecordingStop { kRequested, kDuration, kDiskFull, kWriteFailed };
 struct RecordingResult {
   RecordingStop stop = RecordingStop::kRequested;
   std::string stop_reason;  // for people
+  // With kWriteFailed: what kind of failure it was (core/failure.hpp), environment for a full
+  // disk or a device gone.
+  ErrorKind failure_kind = ErrorKind::kEnvironment;
   double duration_s = 0;
   std::uint64_t messages = 0;
   std::vector<SourceStatus> sources;

@@ -67,8 +67,8 @@ void RunCapture(CaptureArguments arguments, CliContext& context) {
   context.FinishProgress();
   std::fputs(capture::RecordingSummary(simulate.bag, result).c_str(), stdout);
   if (result.stop == capture::RecordingStop::kWriteFailed) {
-    throw InternalError(simulate.bag + ": " + result.stop_reason +
-                        " (the bag keeps everything written before)");
+    throw Error(result.failure_kind, simulate.bag + ": " + result.stop_reason +
+                                         " (the bag keeps everything written before)");
   }
 }
 

@@ -47,6 +47,8 @@ void RegisterDetectCommand(CLI::App& app, CliContext& context) {
       ->check(CLI::ExistingDirectory);
   command->add_option("-o,--output", arguments->options.output_dir,
                       "Where to write (default: the run directory)");
+  command->add_flag("--force", arguments->options.force_output,
+                    "Write into an output folder that holds files littermap does not write there");
   command
       ->add_option("--trajectory", arguments->options.trajectory,
                    "TUM trajectory to place objects with (default RUN_DIR/trajectory.tum; "

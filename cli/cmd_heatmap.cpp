@@ -37,6 +37,8 @@ void RegisterHeatmapCommand(CLI::App& app, CliContext& context) {
   CLI::App* command = context.AddCommand(app, "heatmap", "Litter density maps of a site");
   command->add_option("SITE", arguments->site, "Site database (SITE.gpkg)")->required();
   command->add_option("-o,--output", arguments->output, "Output directory")->required();
+  command->add_flag("--force", arguments->options.force_output,
+                    "Write into an output folder that holds files littermap does not write there");
   command->add_option("--from", arguments->from, "Only runs starting on or after (YYYY-MM-DD)");
   command->add_option("--to", arguments->to, "Only runs starting before (YYYY-MM-DD)");
   auto& options = arguments->options.map;

@@ -47,7 +47,10 @@ void RegisterIngestCommand(CLI::App& app, CliContext& context) {
   ingest
       ->add_option("RUN_DIR", arguments->run_dir, "Run directory with trajectory.tum and items.csv")
       ->required();
-  ingest->add_option("--name", arguments->options.name, "Run name (default: the directory name)");
+  ingest->add_option(
+      "--name", arguments->options.name,
+      "Run name (default: the folder's name, or its parent's for a folder called run or bag); "
+      "a name the site holds for other results is refused");
   ingest
       ->add_option("--initial", arguments->initial,
                    "Where the run starts in the site frame, X Y DEG (default: the dock, 0 0 0); "

@@ -49,6 +49,8 @@ void RegisterReconstructCommand(CLI::App& app, CliContext& context) {
       ->required()
       ->check(CLI::ExistingPath);
   command->add_option("-o,--output", arguments->run_dir, "Run directory to write")->required();
+  command->add_flag("--force", arguments->options.force_output,
+                    "Write into an output folder that holds files littermap does not write there");
   reconstruct::ReconstructionOptions& options = arguments->options.reconstruction;
   command->add_option("--scan-topic", arguments->scan_topic, "LaserScan topic (= --topic scan=T)");
   command->add_option("--odom-topic", arguments->odometry_topic,

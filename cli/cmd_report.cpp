@@ -36,6 +36,8 @@ void RegisterReportCommand(CLI::App& app, CliContext& context) {
       app, "report", "HTML report of a site for park staff (index.html and report.json)");
   command->add_option("SITE", arguments->site, "Site database (SITE.gpkg)")->required();
   command->add_option("-o,--output", arguments->output, "Output directory")->required();
+  command->add_flag("--force", arguments->options.force_output,
+                    "Write into an output folder that holds files littermap does not write there");
   command->add_option("--from", arguments->from, "Only runs starting on or after (YYYY-MM-DD)");
   command->add_option("--to", arguments->to, "Only runs starting before (YYYY-MM-DD)");
   auto& figures = arguments->options.figures;

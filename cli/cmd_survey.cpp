@@ -43,7 +43,9 @@ void RegisterSurveyCommand(CLI::App& app, CliContext& context) {
   command->add_option("--site", options->site, "Site database (created when missing)")->required();
   command->add_option("-o,--output", options->output_dir,
                       "Output directory (default: NAME-survey in the current directory)");
-  command->add_option("--name", options->name, "Run name (default: the bag directory's name)");
+  command->add_option(
+      "--name", options->name,
+      "Run name (default: the bag folder's name, or its parent's for a folder called bag)");
   command->add_option("--model", options->detect.model,
                       "Classifier model (default: the built-in one)");
   command

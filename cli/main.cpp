@@ -1,6 +1,8 @@
 // littermap: one executable, one subcommand per stage (DESIGN.md, "The command line").
-// Exit codes: 0 success, 1 usage error, 2 bad input data, 3 internal error.
+// Exit codes: 0 success, 1 usage error, 2 bad input data, 3 internal error, 4 environment
+// (disk full, permission denied, device gone, out of memory); core/failure.hpp decides which.
 
+#include <csignal>
 #include <cstdio>
 #include <exception>
 
@@ -9,13 +11,12 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/cli_context.hpp"
-#include "core/error.hpp"
+#include "core/failure.hpp"
 #include "littermap_version.hpp"
 
 namespace {
 
 constexpr int kExitUsage = 1;
-constexpr int kExitInternal = 3;
 
 int Fail(littermap::cli::CliContext& context, int code, const char* what) {
   context.FinishProgress();
@@ -32,6 +33,9 @@ int main(int argc, char** argv) {
   // (reconstructing freiburg-campus: half the system time, the same peak memory).
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
+  // A file-size limit (ulimit -f) then fails the write with EFBIG, which every writer reports
+  // like a full disk, instead of killing the process mid-file.
+  std::signal(SIGXFSZ, SIG_IGN);
   using littermap::cli::CliContext;
   CLI::App app{"littermap: litter distribution maps from a park robot's sensor logs"};
   app.set_version_flag("--version", "littermap " LITTERMAP_VERSION);
@@ -70,11 +74,9 @@ int main(int argc, char** argv) {
     if (context.run) context.run();
     context.FinishProgress();
     return 0;
-  } catch (const littermap::Error& e) {
-    return Fail(context, static_cast<int>(e.kind()), e.what());
   } catch (const std::bad_alloc&) {
-    return Fail(context, kExitInternal, "out of memory");
+    return Fail(context, static_cast<int>(littermap::ErrorKind::kEnvironment), "out of memory");
   } catch (const std::exception& e) {
-    return Fail(context, kExitInternal, e.what());
+    return Fail(context, static_cast<int>(littermap::KindOf(e)), e.what());
   }
 }

@@ -1,9 +1,10 @@
 #include "core/atomic_file.hpp"
 
+#include <cerrno>
 #include <fstream>
 #include <system_error>
 
-#include "core/error.hpp"
+#include "core/failure.hpp"
 
 namespace littermap {
 
@@ -16,12 +17,12 @@ void WriteFileAtomically(const std::filesystem::path& file, std::string_view con
     if (!out) {
       std::error_code ignored;
       std::filesystem::remove(temporary, ignored);
-      throw UsageError(file.string() + ": cannot write");
+      throw FileFailure(file, "cannot write", errno);
     }
   }
   std::error_code error;
   std::filesystem::rename(temporary, file, error);
-  if (error) throw UsageError(file.string() + ": cannot write: " + error.message());
+  if (error) throw FileFailure(file, "cannot write", error.value());
 }
 
 }  // namespace littermap

@@ -7,7 +7,7 @@
 
 namespace littermap {
 
-// Throws UsageError naming the file when it cannot be written.
+// Throws the FileFailure naming the file when it cannot be written (disk full: environment).
 void WriteFileAtomically(const std::filesystem::path& file, std::string_view contents);
 
 }  // namespace littermap

@@ -2,20 +2,52 @@
 
 #include <sqlite3.h>
 
+#include <cstring>
 #include <limits>
+#include <string>
+
+#include "core/failure.hpp"
 
 namespace littermap {
+
+ErrorKind SqliteErrorKind(int code) {
+  switch (code & 0xff) {  // the primary result code of an extended one
+    case SQLITE_FULL:
+    case SQLITE_IOERR:
+    case SQLITE_READONLY:
+    case SQLITE_PERM:
+    case SQLITE_CANTOPEN:
+    case SQLITE_NOMEM:
+    case SQLITE_BUSY:
+    case SQLITE_LOCKED:
+    case SQLITE_NOLFS:
+      return ErrorKind::kEnvironment;
+    case SQLITE_CORRUPT:
+    case SQLITE_NOTADB:
+      return ErrorKind::kBadInput;
+    default:
+      return ErrorKind::kInternal;
+  }
+}
+
 namespace {
 
 constexpr int kBusyTimeoutMs = 5000;
+
+// SQLite's message, and the operating system's when one caused it ("disk I/O error (File too
+// large)").
+std::string SqliteMessage(sqlite3* db, const std::string& message) {
+  const int system_errno = db ? sqlite3_system_errno(db) : 0;
+  return system_errno != 0 ? message + " (" + std::strerror(system_errno) + ")" : message;
+}
 
 }  // namespace
 
 SqliteStatement::SqliteStatement(sqlite3* db, std::string_view sql,
                                  const std::filesystem::path& file)
     : db_(db), file_(file) {
-  const int code = sqlite3_prepare_v2(db_, sql.data(), static_cast<int>(sql.size()), &statement_,
-                                      nullptr);
+  const int code =
+      sqlite3_prepare_v2(db_, sql.data(), static_cast<int>(sql.size()), &statement_, nullptr);
   if (code != SQLITE_OK) Fail(code, "preparing a query");
 }
 
@@ -100,7 +132,9 @@ std::span<const std::uint8_t> SqliteStatement::ColumnBlob(int column) const {
 }
 
 void SqliteStatement::Fail(int code, const char* action) const {
-  throw SqliteError(file_.string() + ": SQLite error " + action + ": " + sqlite3_errmsg(db_), code);
+  throw SqliteError(
+      file_.string() + ": SQLite error " + action + ": " + SqliteMessage(db_, sqlite3_errmsg(db_)),
+      code);
 }
 
 SqliteDatabase::SqliteDatabase(const std::filesystem::path& file, Mode mode) : file_(file) {
@@ -119,9 +153,12 @@ SqliteDatabase::SqliteDatabase(const std::filesystem::path& file, Mode mode) : f
   const int code = sqlite3_open_v2(file.c_str(), &db_, flags, nullptr);
   if (code != SQLITE_OK) {
     const std::string message = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(code);
+    // Why the file could not be opened (no such folder: the path; no permission: the machine).
+    const int system_errno = db_ ? sqlite3_system_errno(db_) : 0;
     sqlite3_close(db_);
     db_ = nullptr;
-    throw SqliteError(file.string() + ": cannot open database: " + message, code);
+    throw SqliteError(file.string() + ": cannot open database: " + message, code,
+                      system_errno != 0 ? KindOfErrno(system_errno) : SqliteErrorKind(code));
   }
   sqlite3_extended_result_codes(db_, 0);
   sqlite3_busy_timeout(db_, kBusyTimeoutMs);
@@ -141,7 +178,7 @@ void SqliteDatabase::Execute(std::string_view sql) {
   if (code != SQLITE_OK) {
     const std::string message = error ? error : sqlite3_errstr(code);
     sqlite3_free(error);
-    throw SqliteError(file_.string() + ": SQLite error: " + message, code);
+    throw SqliteError(file_.string() + ": SQLite error: " + SqliteMessage(db_, message), code);
   }
 }
 

@@ -16,9 +16,17 @@ struct sqlite3_stmt;
 
 namespace littermap {
 
-class SqliteError : public InternalError {
+// The kind of an SQLite result code: environment for a full disk, an I/O error, a read-only or
+// unopenable file, no memory or a lock held too long; bad input for a file that is not a
+// database or is damaged; internal (a wrong statement: a bug) for the rest.
+ErrorKind SqliteErrorKind(int code);
+
+class SqliteError : public Error {
  public:
-  SqliteError(const std::string& message, int code) : InternalError(message), code_(code) {}
+  SqliteError(const std::string& message, int code)
+      : Error(SqliteErrorKind(code), message), code_(code) {}
+  SqliteError(const std::string& message, int code, ErrorKind kind)
+      : Error(kind, message), code_(code) {}
   int code() const { return code_; }
 
  private:

@@ -1,6 +1,9 @@
 #include "db/site_database.hpp"
 
+#include <cmath>
+
 #include "core/error.hpp"
+#include "core/utf8.hpp"
 #include "db/geopackage_schema.hpp"
 #include "db/site_migrations.hpp"
 #include "db/spatial_ref_sys.hpp"
@@ -35,6 +38,13 @@ void ValidateOptions(const std::filesystem::path& file, const SiteOptions& optio
   if (!options.epsg_code && (options.origin_easting_m != 0.0 || options.origin_northing_m != 0.0 ||
                              options.rotation_deg != 0.0)) {
     throw UsageError("site init: --origin and --rotation place the site in a CRS; give --crs too");
+  }
+  RequireUtf8(options.name, "site init: --name");
+  if (!std::isfinite(options.rotation_deg) || std::abs(options.rotation_deg) > 360.0) {
+    throw UsageError("site init: --rotation must be a number of degrees from -360 to 360");
+  }
+  if (options.epsg_code) {
+    CheckSiteOrigin(*options.epsg_code, options.origin_easting_m, options.origin_northing_m);
   }
 }
 
@@ -83,6 +93,20 @@ SiteDatabase SiteDatabase::Open(const std::filesystem::path& file) {
                         "site init')");
   }
   SiteDatabase site(file, SqliteDatabase::Mode::kReadWrite);
+  try {
+    OpenChecked(site);
+  } catch (const SqliteError& e) {
+    // The statements that open a site are those of every site littermap writes: one that fails
+    // here found a damaged file, not a bug.
+    if (e.kind() != ErrorKind::kInternal) throw;
+    throw BadInputError(file.string() + ": not a usable littermap site database (" + e.what() +
+                        ")");
+  }
+  return site;
+}
+
+void SiteDatabase::OpenChecked(SiteDatabase& site) {
+  const std::filesystem::path& file = site.database_.file();
   CheckIsGeoPackage(site.database_);
   if (SiteSchemaVersion(site.database_) == 0 || !site.database_.HasTable("sites")) {
     throw BadInputError(file.string() +
@@ -91,8 +115,8 @@ SiteDatabase SiteDatabase::Open(const std::filesystem::path& file) {
   }
   site.Configure();
   site.InTransaction([&] { MigrateSiteSchema(site.database_); });
+  CheckSiteSchema(site.database_);
   site.LoadSite();
-  return site;
 }
 
 void SiteDatabase::LoadSite() {

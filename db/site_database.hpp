@@ -159,6 +159,8 @@ class SiteDatabase {
   explicit SiteDatabase(const std::filesystem::path& file, SqliteDatabase::Mode mode);
   void Configure();
   void LoadSite();
+  // The checks and migrations of Open, on an opened file.
+  static void OpenChecked(SiteDatabase& site);
 
   SqliteDatabase database_;
   SiteInfo site_;

@@ -21,4 +21,9 @@ int SiteSchemaVersion(SqliteDatabase& database);
 // Throws BadInputError naming the file when its schema is newer than this build knows.
 MigrationResult MigrateSiteSchema(SqliteDatabase& database);
 
+// Throws BadInputError naming the first table or column of the current schema (the migrations
+// above, applied to an empty database) that `database` lacks: a damaged site, or one another
+// program wrote, is refused when opened rather than failing in a query later.
+void CheckSiteSchema(SqliteDatabase& database);
+
 }  // namespace littermap::db

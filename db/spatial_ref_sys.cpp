@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 
 #include "core/error.hpp"
@@ -28,6 +29,12 @@ struct PjDeleter {
 };
 using ContextPtr = std::unique_ptr<PJ_CONTEXT, ContextDeleter>;
 using PjPtr = std::unique_ptr<PJ, PjDeleter>;
+
+std::string Decimal(double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.10g", value);
+  return text;
+}
 
 bool AxesInMetres(PJ_CONTEXT* context, PJ* crs) {
   PjPtr cs(proj_crs_get_coordinate_system(context, crs));
@@ -92,6 +99,40 @@ SpatialRefSys EpsgSpatialRefSys(int epsg_code) {
   srs.definition = wkt;
   if (const char* scope = proj_get_scope(crs.get())) srs.description = scope;
   return srs;
+}
+
+void CheckSiteOrigin(int epsg_code, double easting_m, double northing_m) {
+  const std::string code = "EPSG:" + std::to_string(epsg_code);
+  const std::string origin = "--origin " + Decimal(easting_m) + " " + Decimal(northing_m);
+  if (!std::isfinite(easting_m) || !std::isfinite(northing_m)) {
+    throw UsageError(origin + ": easting and northing must be finite numbers of metres in " + code);
+  }
+  ContextPtr context(proj_context_create());
+  proj_log_level(context.get(), PJ_LOG_NONE);
+  PjPtr crs(proj_create(context.get(), code.c_str()));
+  double west = 0, south = 0, east = 0, north = 0;
+  const char* area = nullptr;
+  if (!crs ||
+      !proj_get_area_of_use(context.get(), crs.get(), &west, &south, &east, &north, &area) ||
+      west < -180.0) {
+    return;  // no area of use to hold the origin to
+  }
+  PjPtr raw(proj_create_crs_to_crs(context.get(), code.c_str(), "EPSG:4326", nullptr));
+  PjPtr to_lon_lat(raw ? proj_normalize_for_visualization(context.get(), raw.get()) : nullptr);
+  if (!to_lon_lat) return;
+  const PJ_COORD lon_lat =
+      proj_trans(to_lon_lat.get(), PJ_FWD, proj_coord(easting_m, northing_m, 0.0, 0.0));
+  const double lon = lon_lat.lp.lam, lat = lon_lat.lp.phi;
+  const bool lon_inside = west > east  // an area across the antimeridian: any longitude
+                              ? true
+                              : lon >= west - kOriginMarginDeg && lon <= east + kOriginMarginDeg;
+  if (!std::isfinite(lon) || !std::isfinite(lat) || !lon_inside || lat < south - kOriginMarginDeg ||
+      lat > north + kOriginMarginDeg) {
+    throw UsageError(origin + ": outside the area " + code + " is made for (" + (area ? area : "") +
+                     ": longitude " + Decimal(west) + " to " + Decimal(east) + ", latitude " +
+                     Decimal(south) + " to " + Decimal(north) +
+                     " degrees); easting and northing are metres in " + code);
+  }
 }
 
 SpatialRefSys LocalSpatialRefSys(const std::string& site_name) {

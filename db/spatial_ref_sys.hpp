@@ -33,6 +33,12 @@ std::optional<int> ParseEpsgCode(const std::string& text, const std::string& wha
 // does not know it or it is not a projected CRS with metre axes (site coordinates are metres).
 SpatialRefSys EpsgSpatialRefSys(int epsg_code);
 
+// Throws UsageError with the CRS's area of use when the site origin (metres in that CRS) is not
+// finite or does not lie in that area widened by kOriginMarginDeg (a site a little beyond a UTM
+// zone's edge is still mapped well; one 1,000 km off is a typing error).
+constexpr double kOriginMarginDeg = 5.0;
+void CheckSiteOrigin(int epsg_code, double easting_m, double northing_m);
+
 // A right-handed metric frame (x east, y north) with no link to the Earth.
 SpatialRefSys LocalSpatialRefSys(const std::string& site_name);
 

@@ -1,12 +1,14 @@
 #include "detect/litter_classifier.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <map>
 
 #include <opencv2/ml.hpp>
 
 #include "core/error.hpp"
+#include "core/failure.hpp"
 #include "detect/colour_emd.hpp"
 #include "detect/colour_gmm.hpp"
 #include "detect/hu_shape.hpp"
@@ -284,7 +286,7 @@ std::size_t LitterClassifier::Predict(const ObjectSample& object, ClassifierMeth
 
 void LitterClassifier::Save(const std::filesystem::path& file) const {
   cv::FileStorage fs(file.string(), cv::FileStorage::WRITE);
-  if (!fs.isOpened()) throw InternalError(file.string() + ": cannot write the model");
+  if (!fs.isOpened()) throw FileFailure(file, "cannot write the model", errno);
   fs << "format"
      << "littermap litter classifier"
      << "version" << 1;

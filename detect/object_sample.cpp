@@ -1,6 +1,7 @@
 #include "detect/object_sample.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <fstream>
 
@@ -8,6 +9,7 @@
 
 #include "core/csv_table.hpp"
 #include "core/error.hpp"
+#include "core/failure.hpp"
 
 namespace littermap::detect {
 
@@ -50,8 +52,7 @@ void WriteSamples(const std::filesystem::path& directory,
   std::error_code error;
   std::filesystem::create_directories(directory, error);
   std::ofstream labels(directory / "labels.csv");
-  if (error || !labels)
-    throw InternalError(directory.string() + ": cannot create the sample files");
+  if (error || !labels) throw FileFailure(directory, "cannot create the sample files", errno);
   labels << "crop,mask,label,size_m,width_m,height_m,range_m,source\n";
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const ObjectSample& s = samples[i];
@@ -60,7 +61,7 @@ void WriteSamples(const std::filesystem::path& directory,
     std::snprintf(mask, sizeof mask, "mask_%06zu.png", i);
     if (!cv::imwrite((directory / crop).string(), s.colour_bgr) ||
         !cv::imwrite((directory / mask).string(), s.mask)) {
-      throw InternalError(directory.string() + ": cannot write " + crop);
+      throw FileFailure(directory / crop, "cannot write", errno);
     }
     char line[256];
     std::snprintf(line, sizeof line, "%s,%s,%s,%.4f,%.4f,%.4f,%.3f,%s\n", crop, mask,
@@ -68,7 +69,7 @@ void WriteSamples(const std::filesystem::path& directory,
     labels << line;
   }
   labels.flush();
-  if (!labels) throw InternalError((directory / "labels.csv").string() + ": write failed");
+  if (!labels) throw FileFailure(directory / "labels.csv", "cannot write", errno);
 }
 
 }  // namespace littermap::detect

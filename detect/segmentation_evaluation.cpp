@@ -92,7 +92,7 @@ std::string ToJson(const SegmentationEvaluation& evaluation) {
   for (const auto& [name, c] : evaluation.classes) {
     json[name] = {{"objects", c.objects}, {"mean_iou", c.mean_iou}, {"found_share", c.found_share}};
   }
-  return json.dump(2);
+  return json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 std::string ToText(const SegmentationEvaluation& evaluation) {

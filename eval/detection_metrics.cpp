@@ -296,7 +296,7 @@ std::string ToJson(const DetectionMetrics& metrics, const DetectionMetricsOption
     json["confusion"][labels[t]] = row;
   }
   json["match_radius_m"] = options.match_radius_m;
-  return json.dump(2);
+  return json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 std::vector<DetectedItem> TransformItems(std::vector<DetectedItem> items,

@@ -83,7 +83,7 @@ std::string ToJson(const std::vector<std::string>& names, const std::vector<MapS
                                     {"echoes_drawn", maps[i].echoes_drawn},
                                     {"occupied_cells", maps[i].occupied_cells}});
   }
-  return json.dump(2);
+  return json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 std::string ToText(const std::vector<std::string>& names, const std::vector<MapSharpness>& maps,

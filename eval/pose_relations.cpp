@@ -237,7 +237,7 @@ std::string ToJson(const PoseRelationMetrics& metrics) {
   json["unmatched"] = metrics.unmatched;
   json["metric_evaluator"] = ErrorsJson(metrics.component);
   json["cartographer"] = ErrorsJson(metrics.cartographer);
-  return json.dump(2);
+  return json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 std::string ToText(const PoseRelationMetrics& metrics, const PoseRelationOptions& options) {

@@ -213,7 +213,7 @@ std::string ToJson(const TrajectoryMetrics& metrics) {
   json["rpe_rot_mean_deg"] = metrics.rpe_rot_mean_deg;
   json["associated_poses"] = metrics.associated_poses;
   json["rpe_pairs"] = metrics.rpe_pairs;
-  return json.dump(2);
+  return json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 std::string ToText(const TrajectoryMetrics& metrics, const TrajectoryMetricsOptions& options) {

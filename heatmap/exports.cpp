@@ -1,11 +1,13 @@
 #include "heatmap/exports.hpp"
 
+#include <cerrno>
 #include <cstdio>
 #include <fstream>
 #include <string>
 #include <string_view>
 
 #include "core/error.hpp"
+#include "core/failure.hpp"
 
 namespace littermap::heatmap {
 namespace {
@@ -18,7 +20,7 @@ std::ofstream Create(const std::filesystem::path& file) {
 
 void Finish(std::ofstream& out, const std::filesystem::path& file) {
   out.close();
-  if (!out) throw InternalError(file.string() + ": writing failed (disk full?)");
+  if (!out) throw FileFailure(file, "cannot write", errno);
 }
 
 // Formats one or two numbers (b is ignored by a one-number format).

@@ -5,6 +5,7 @@
 #include <geovalues.h>
 #include <tiffio.h>
 #include <xtiffio.h>
+#include <cerrno>
 
 #include <cstdarg>
 #include <cstdio>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/failure.hpp"
 #include "heatmap/tiff_tags.hpp"
 
 namespace littermap::heatmap {
@@ -54,8 +56,10 @@ class TiffFile {
     if (!message_.empty()) Fail("closing");
   }
   [[noreturn]] void Fail(const std::string& action) {
-    throw InternalError(file_.string() + ": writing GeoTIFF failed (" + action +
-                        (message_.empty() ? "" : ": " + message_) + ")");
+    throw FileFailure(
+        file_,
+        "writing GeoTIFF failed (" + action + (message_.empty() ? "" : ": " + message_) + ")",
+        errno);
   }
 
  private:

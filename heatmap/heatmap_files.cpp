@@ -5,6 +5,7 @@
 #include <optional>
 #include <utility>
 
+#include "core/output_folder.hpp"
 #include "heatmap/density_preview.hpp"
 #include "heatmap/exports.hpp"
 #include "heatmap/geotiff_writer.hpp"
@@ -24,13 +25,17 @@ void WriteRaster(const std::filesystem::path& file, const Raster& raster,
 
 }  // namespace
 
+std::vector<std::string> HeatmapFileNames() {
+  return {"density.tif", "effort.tif", "density.png", "hotspots.csv", "items.csv", "items.geojson"};
+}
+
 HeatmapFilesResult WriteHeatmapFiles(db::SiteDatabase& site, const std::filesystem::path& dir,
                                      HeatmapFilesOptions options) {
+  PrepareOutputFolder(dir, {"-o", HeatmapFileNames(), options.force_output});
   options.hotspots.separation_m = options.map.density.kernel.bandwidth_m;
   const db::SiteFrame& frame = site.site().frame;
   const SiteHeatmap map = ComputeSiteHeatmap(site, options.map);
 
-  std::filesystem::create_directories(dir);
   const float nodata = options.map.density.nodata;
   WriteRaster(dir / "density.tif", map.density.density, frame,
               "littermap litter density, items per 100 m2 per survey", nodata);

@@ -22,8 +22,13 @@ namespace littermap::heatmap {
 
 struct HeatmapFilesOptions {
   SiteHeatmapOptions map;
-  HotspotOptions hotspots;  // separation_m: the density's kernel bandwidth
+  HotspotOptions hotspots;    // separation_m: the density's kernel bandwidth
+  bool force_output = false;  // write into a folder holding other files too
 };
+
+// The files WriteHeatmapFiles writes: density.tif, effort.tif, density.png, hotspots.csv,
+// items.csv, items.geojson.
+std::vector<std::string> HeatmapFileNames();
 
 struct HeatmapFilesResult {
   std::size_t runs = 0;

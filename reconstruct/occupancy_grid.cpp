@@ -1,6 +1,7 @@
 #include "reconstruct/occupancy_grid.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -10,6 +11,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/error.hpp"
+#include "core/failure.hpp"
 #include "core/map_server_grey.hpp"
 
 namespace littermap::reconstruct {
@@ -134,7 +136,7 @@ void OccupancyGrid::WritePgmYaml(const std::filesystem::path& pgm_path,
   pgm << "P5\n# littermap occupancy grid\n" << width_ << " " << height_ << "\n255\n";
   pgm.write(reinterpret_cast<const char*>(image.data()),
             static_cast<std::streamsize>(image.size()));
-  if (!pgm) throw InternalError(pgm_path.string() + ": writing failed");
+  if (!pgm) throw FileFailure(pgm_path, "cannot write", errno);
   std::ofstream yaml(yaml_path);
   if (!yaml) throw UsageError(yaml_path.string() + ": cannot create the map description");
   const double cell = options_.cell_size_m;
@@ -144,7 +146,7 @@ void OccupancyGrid::WritePgmYaml(const std::filesystem::path& pgm_path,
        << "origin: [" << static_cast<double>(min_.x) * cell << ", "
        << static_cast<double>(min_.y) * cell << ", 0.0]\n"
        << "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
-  if (!yaml) throw InternalError(yaml_path.string() + ": writing failed");
+  if (!yaml) throw FileFailure(yaml_path, "cannot write", errno);
 }
 
 void OccupancyGrid::WritePng(const std::filesystem::path& png_path) const {

@@ -85,7 +85,7 @@ std::string ToJson(const TrajectorySettling& result) {
   json["ate_max_m"] = result.moved.ate_max_m;
   json["rpe_trans_mean_m"] = result.moved.rpe_trans_mean_m;
   json["rpe_rot_mean_deg"] = result.moved.rpe_rot_mean_deg;
-  return json.dump(2);
+  return json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 std::string ToText(const TrajectorySettling& result, const TrajectorySettlingOptions& options) {

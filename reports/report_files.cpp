@@ -4,6 +4,7 @@
 #include <system_error>
 
 #include "core/error.hpp"
+#include "core/output_folder.hpp"
 #include "core/time.hpp"
 #include "littermap_version.hpp"
 #include "reports/report_json.hpp"
@@ -19,11 +20,9 @@ ReportFilesOptions StampedReportFilesOptions() {
 
 SiteReport WriteReportFiles(db::SiteDatabase& site, const std::filesystem::path& dir,
                             const ReportFilesOptions& options) {
+  PrepareOutputFolder(dir, {"-o", {"index.html", "report.json"}, options.force_output});
   SiteReport report = BuildSiteReport(site, options.figures);
   const SiteMapFigure figure = DrawSiteMap(report, options.map);
-  std::error_code error;
-  std::filesystem::create_directories(dir, error);
-  if (error) throw UsageError(dir.string() + ": cannot create the directory: " + error.message());
   WriteHtmlReport(dir / "index.html", report, figure, options.html);
   WriteReportJson(dir / "report.json", report, options.html.generated_utc);
   return report;

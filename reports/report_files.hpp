@@ -14,7 +14,8 @@ namespace littermap::reports {
 struct ReportFilesOptions {
   SiteReportOptions figures;
   SiteMapFigureOptions map;
-  HtmlReportOptions html;  // generated_utc doubles as report.json's
+  HtmlReportOptions html;     // generated_utc doubles as report.json's
+  bool force_output = false;  // write into a folder holding other files too
 };
 
 // The default figures, generated now, stamped with this littermap's version.

@@ -93,7 +93,7 @@ std::string ReportJson(const SiteReport& report, const std::string& generated_ut
   json["runs"] = Json::array();
   for (const RunFigures& run : report.runs) json["runs"].push_back(RunJson(run));
   json["warnings"] = report.warnings;
-  return json.dump(2) + "\n";
+  return json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 void WriteReportJson(const std::filesystem::path& file, const SiteReport& report,

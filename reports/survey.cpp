@@ -6,11 +6,13 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/failure.hpp"
 #include "db/site_database.hpp"
 #include "heatmap/heatmap_files.hpp"
 #include "reports/report_files.hpp"
 #include "run/reconstruct_run.hpp"
 #include "run/run_files.hpp"
+#include "run/run_name.hpp"
 #include "run/stage_marker.hpp"
 #include "site/run_directory_ingest.hpp"
 
@@ -82,7 +84,6 @@ std::vector<Stage> Stages(Survey& survey) {
   const auto ingest = [&survey](const ProgressCallback&) {
     site::RunDirectoryIngestOptions run;
     run.name = survey.name;
-    run.refuse_name_in_use = true;
     const site::RunDirectoryIngestResult result =
         site::IngestRunDirectory(survey.options.site, survey.run_dir, run);
     survey.Warn(result.warnings);
@@ -131,11 +132,10 @@ void RunStage(const Survey& survey, const Stage& stage, const std::string& label
   try {
     stage.run(Prefixed(survey.callbacks.progress, label + " "));
   } catch (const std::exception& e) {
-    const auto* error = dynamic_cast<const Error*>(&e);
-    throw Error(error ? error->kind() : ErrorKind::kInternal,
-                "survey stage '" + stage.name + "' failed: " + e.what() +
-                    "\n  the earlier stages' outputs are kept in " + survey.out.string() +
-                    "; once fixed, the same command resumes at this stage");
+    throw Error(KindOf(e), "survey stage '" + stage.name + "' failed: " + e.what() +
+                               "\n  the earlier stages' outputs are kept in " +
+                               survey.out.string() +
+                               "; once fixed, the same command resumes at this stage");
   }
   std::ofstream(marker) << stage.name << " finished\n";
 }
@@ -147,9 +147,8 @@ SurveyResult RunSurvey(const SurveyOptions& options, const SurveyCallbacks& call
     throw UsageError(options.bag.string() + ": not a run bag directory");
   }
   Survey survey(options, callbacks);
-  survey.name = options.name.empty()
-                    ? fs::absolute(options.bag).lexically_normal().filename().string()
-                    : options.name;
+  if (!options.name.empty()) run::CheckRunName(options.name, "--name");
+  survey.name = options.name.empty() ? run::RunNameFromPath(options.bag) : options.name;
   survey.out = options.output_dir.empty() ? fs::path(survey.name + "-survey") : options.output_dir;
   survey.run_dir = survey.out / "run";
   survey.maps_dir = survey.out / "maps";

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "bag/tum_trajectory.hpp"
+#include "core/output_folder.hpp"
 #include "detect/litter_classifier.hpp"
 #include "run/detections_file.hpp"
 #include "run/items_file.hpp"
@@ -18,11 +19,11 @@ DetectRunResult DetectRun(const std::filesystem::path& bag, const std::filesyste
                                                    const detect::FrameSegmentation&)>& on_frame) {
   DetectRunResult result;
   result.output_dir = options.output_dir.empty() ? run_dir : options.output_dir;
+  PrepareOutputFolder(result.output_dir, {"-o", RunFiles::Names(), options.force_output});
   const std::vector<StampedPose> trajectory = bag::ReadTumTrajectory(
       options.trajectory.empty() ? RunFiles(run_dir).trajectory() : options.trajectory);
   const auto classifier = detect::LitterClassifier::Load(options.model);
   const std::size_t clutter = classifier.ClassIndex("clutter");
-  std::filesystem::create_directories(result.output_dir);
   const RunFiles output(result.output_dir);
   DetectionsCsvWriter detections(output.detections());
   detect::ItemFusion fusion(options.fusion, classifier.classes().size());

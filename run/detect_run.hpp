@@ -21,6 +21,7 @@ struct DetectRunOptions {
   std::filesystem::path model;       // the classifier of `littermap train`
   std::filesystem::path trajectory;  // placing the objects; empty: RUN_DIR/trajectory.tum
   std::filesystem::path output_dir;  // where to write; empty: the run directory
+  bool force_output = false;         // write among other files too (core/output_folder.hpp)
   detect::RunObjectsOptions objects;
   detect::FusionOptions fusion;
   // Sensor role -> topic (--topic ROLE=NAME); the other roles are found in the bag by

@@ -1,9 +1,11 @@
 #include "run/detections_file.hpp"
 
+#include <cerrno>
 #include <cstdio>
 #include <utility>
 
 #include "core/error.hpp"
+#include "core/failure.hpp"
 
 namespace littermap::run {
 
@@ -29,7 +31,7 @@ void DetectionsCsvWriter::Write(const detect::PlacedObject& placed, const std::s
 }
 
 void DetectionsCsvWriter::Close() {
-  if (!out_.flush()) throw InternalError(file_.string() + ": write failed");
+  if (!out_.flush()) throw FileFailure(file_, "cannot write", errno);
   out_.close();
 }
 

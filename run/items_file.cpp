@@ -1,10 +1,12 @@
 #include "run/items_file.hpp"
 
+#include <cerrno>
 #include <cstdio>
 #include <fstream>
 
 #include "core/csv_table.hpp"
 #include "core/error.hpp"
+#include "core/failure.hpp"
 
 namespace littermap::run {
 
@@ -36,7 +38,7 @@ ItemsWritten WriteItemsCsv(const std::filesystem::path& file,
                   static_cast<long long>(item.last_seen_ns));
     out << line << '\n';
   }
-  if (!out.flush()) throw InternalError(file.string() + ": write failed");
+  if (!out.flush()) throw FileFailure(file, "cannot write", errno);
   return written;
 }
 

@@ -1,5 +1,6 @@
 #include "run/quality_file.hpp"
 
+#include <cerrno>
 #include <fstream>
 #include <sstream>
 #include <utility>
@@ -7,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/failure.hpp"
 
 namespace littermap::run {
 namespace {
@@ -183,7 +185,7 @@ void ReadCounts(const Json& json, ReconstructionQuality& q) {
 
 std::string ToJson(const ReconstructionQuality& quality) {
   const Json json = quality.visual_odometry ? VisualOdometryJson(quality) : SlamJson(quality);
-  return json.dump(2) + "\n";
+  return json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 std::optional<ReconstructionQuality> QualityFromJson(std::string_view text) {
@@ -201,7 +203,7 @@ void WriteQualityFile(const std::filesystem::path& file, const ReconstructionQua
   std::ofstream out(file);
   if (!out) throw UsageError(file.string() + ": cannot create");
   out << ToJson(quality);
-  if (!out) throw InternalError(file.string() + ": writing failed");
+  if (!out) throw FileFailure(file, "cannot write", errno);
 }
 
 ReconstructionQuality ReadQualityFile(const std::filesystem::path& file) {

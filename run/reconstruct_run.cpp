@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "core/output_folder.hpp"
 #include "reconstruct/options_file.hpp"
 #include "reconstruct/rgbd_tracker.hpp"
 #include "reconstruct/slam_pipeline.hpp"
@@ -63,6 +64,7 @@ ReconstructRunResult ReconstructRun(const std::filesystem::path& bag,
                                     const std::filesystem::path& run_dir,
                                     const ReconstructRunOptions& run_options,
                                     const ProgressCallback& progress) {
+  PrepareOutputFolder(run_dir, {"-o", RunFiles::Names(), run_options.force_output});
   reconstruct::ReconstructionOptions options = run_options.reconstruction;
   if (!run_options.options_file.empty()) {
     reconstruct::ApplyOptionsFile(run_options.options_file, &options);

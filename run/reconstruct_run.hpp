@@ -23,6 +23,8 @@ struct ReconstructRunOptions {
   // Sensor role -> topic (--topic ROLE=NAME); the other roles are found in the bag by
   // bag/sensor_roles.hpp, starting from reconstruction.topics.
   std::map<std::string, std::string> topic_roles;
+  // Write into a run directory that holds other files too (core/output_folder.hpp).
+  bool force_output = false;
 };
 
 struct ReconstructRunResult {

@@ -14,7 +14,9 @@
 //   items.csv           the fused litter items and natural objects
 
 #include <filesystem>
+#include <string>
 #include <utility>
+#include <vector>
 
 namespace littermap::run {
 
@@ -34,6 +36,20 @@ struct RunFiles {
   std::filesystem::path camera_sources() const { return dir / "camera_sources.csv"; }
   std::filesystem::path detections() const { return dir / "detections.csv"; }
   std::filesystem::path items() const { return dir / "items.csv"; }
+
+  // Every name above: what a run directory may hold (core/output_folder.hpp).
+  static std::vector<std::string> Names() {
+    const RunFiles files("");
+    std::vector<std::string> names;
+    for (const std::filesystem::path& file :
+         {files.trajectory(), files.odometry(), files.key_frames(), files.map_pgm(),
+          files.map_yaml(), files.map_png(), files.routines(), files.quality(),
+          files.sensor_roles(), files.camera(), files.camera_sources(), files.detections(),
+          files.items()}) {
+      names.push_back(file.filename().string());
+    }
+    return names;
+  }
 
   std::filesystem::path dir;
 };

@@ -1,11 +1,13 @@
 #include "run/run_writer.hpp"
 
+#include <cerrno>
 #include <cstdio>
 #include <fstream>
 #include <optional>
 
 #include "bag/tum_trajectory.hpp"
 #include "core/error.hpp"
+#include "core/failure.hpp"
 #include "run/quality_file.hpp"
 #include "run/run_files.hpp"
 
@@ -25,7 +27,7 @@ void WriteText(const std::filesystem::path& path, const std::string& text) {
   std::ofstream out(path);
   if (!out) throw UsageError(path.string() + ": cannot create");
   out << text;
-  if (!out) throw InternalError(path.string() + ": writing failed");
+  if (!out) throw FileFailure(path, "cannot write", errno);
 }
 
 void WriteRoutines(const std::filesystem::path& path, const std::vector<ScanRecord>& scans) {

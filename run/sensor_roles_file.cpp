@@ -1,10 +1,12 @@
 #include "run/sensor_roles_file.hpp"
 
+#include <cerrno>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "bag/bag_reader.hpp"
 #include "core/error.hpp"
+#include "core/failure.hpp"
 
 namespace littermap::run {
 
@@ -27,8 +29,8 @@ void WriteSensorRoles(const std::filesystem::path& file, const bag::SensorRoles&
                   {"found", found == roles.found.end() ? "missing" : found->second}};
   }
   std::ofstream out(file);
-  out << json.dump(2) << "\n";
-  if (!out) throw InternalError(file.string() + ": cannot write");
+  out << json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+  if (!out) throw FileFailure(file, "cannot write", errno);
 }
 
 }  // namespace littermap::run

@@ -1,11 +1,13 @@
 #include "sim/ground_truth.hpp"
 
+#include <cerrno>
 #include <cstdio>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/failure.hpp"
 
 namespace littermap::sim {
 namespace {
@@ -14,13 +16,13 @@ using nlohmann::json;
 
 std::ofstream Open(const std::filesystem::path& path) {
   std::ofstream out(path);
-  if (!out) throw InternalError(path.string() + ": cannot create file");
+  if (!out) throw FileFailure(path, "cannot create", errno);
   return out;
 }
 
 void Close(std::ofstream& out, const std::filesystem::path& path) {
   out.flush();
-  if (!out) throw InternalError(path.string() + ": write failed");
+  if (!out) throw FileFailure(path, "cannot write", errno);
 }
 
 std::string Format(const char* format, auto... values) {
@@ -145,7 +147,7 @@ GroundTruthResult WriteGroundTruth(const std::filesystem::path& directory,
                                    const Simulation& simulation, double start_time_s) {
   std::error_code error;
   std::filesystem::create_directories(directory, error);
-  if (error) throw InternalError(directory.string() + ": cannot create: " + error.message());
+  if (error) throw FileFailure(directory, "cannot create", error.value());
   GroundTruthResult result;
   const auto tum_path = directory / "trajectory.tum";
   std::ofstream tum = Open(tum_path);
@@ -164,7 +166,8 @@ GroundTruthResult WriteGroundTruth(const std::filesystem::path& directory,
       WriteObjects(directory / "natural.csv", simulation.world(), ObjectKind::kNatural);
   const auto json_path = directory / "world.json";
   std::ofstream out = Open(json_path);
-  out << WorldJson(simulation).dump(1) << "\n";
+  out << WorldJson(simulation).dump(1, ' ', false, nlohmann::json::error_handler_t::replace)
+      << "\n";
   Close(out, json_path);
   return result;
 }

@@ -1,25 +1,27 @@
 #include "sim/instance_masks.hpp"
 
+#include <cerrno>
 #include <cstdio>
 #include <map>
 
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/error.hpp"
+#include "core/failure.hpp"
 
 namespace littermap::sim {
 namespace {
 
 std::ofstream OpenCsv(const std::filesystem::path& path, const char* header) {
   std::ofstream out(path);
-  if (!out) throw InternalError(path.string() + ": cannot create file");
+  if (!out) throw FileFailure(path, "cannot create", errno);
   out << header << '\n';
   return out;
 }
 
 void CloseCsv(std::ofstream& out, const std::filesystem::path& path) {
   out.flush();
-  if (!out) throw InternalError(path.string() + ": write failed");
+  if (!out) throw FileFailure(path, "cannot write", errno);
   out.close();
 }
 
@@ -44,7 +46,7 @@ InstanceMaskWriter::InstanceMaskWriter(const std::filesystem::path& truth_dir)
     : directory_(truth_dir / "masks") {
   std::error_code error;
   std::filesystem::create_directories(directory_, error);
-  if (error) throw InternalError(directory_.string() + ": cannot create: " + error.message());
+  if (error) throw FileFailure(directory_, "cannot create", error.value());
   index_ = OpenCsv(directory_ / "index.csv", "frame,stamp_ns,file");
   visible_ = OpenCsv(directory_ / "visible.csv", "frame,object_id,pixels,depth_pixels");
 }
@@ -70,7 +72,7 @@ void InstanceMaskWriter::Write(std::size_t frame, TimestampNs stamp_ns, const cv
     visible_ << frame << ',' << value - 1 << ',' << count.first << ',' << count.second << '\n';
   }
   if (!cv::imwrite(path.string(), mask, {cv::IMWRITE_PNG_COMPRESSION, 3})) {
-    throw InternalError(path.string() + ": cannot write mask");
+    throw FileFailure(path, "cannot write the mask", errno);
   }
   index_ << frame << ',' << stamp_ns << ",masks/" << name << '\n';
   ++written_;

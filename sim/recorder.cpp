@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <numbers>
@@ -11,6 +12,8 @@
 #include "bag/output_guard.hpp"
 #include "bag/sensor_messages.hpp"
 #include "bag/topics.hpp"
+#include "core/error.hpp"
+#include "core/time.hpp"
 #include "sim/ground_truth.hpp"
 #include "sim/instance_masks.hpp"
 #include "sim/rgbd_camera.hpp"
@@ -162,7 +165,15 @@ WorldSpec RunSpec(const WorldSpec& world_spec, const SimRecordOptions& options) 
   WorldSpec spec = world_spec;
   if (options.seed) spec.seed = *options.seed;
   if (options.run_seed) spec.run_seed = *options.run_seed;
-  if (options.start_time_s) spec.start_time_s = *options.start_time_s;
+  if (options.start_time_s) {
+    if (!(*options.start_time_s >= 0 && *options.start_time_s < kMaxStartTimeS)) {
+      const double t = *options.start_time_s;
+      throw UsageError("--start-time " +
+                       (std::abs(t) < 1e12 ? FormatUtc(t, "%Y-%m-%dT%H:%M:%S") : "") +
+                       ": a run starts from 1970-01-01 to 2033-05-18 UTC");
+    }
+    spec.start_time_s = *options.start_time_s;
+  }
   spec.litter_day = options.litter_day;
   spec.driven_route = options.route;
   spec.DrivenRoute();  // an unknown name fails before any file is created

@@ -195,8 +195,8 @@ WorldSpec ParseWorldSpec(const std::string& yaml_text, const std::filesystem::pa
   fields.Read("start_time_s", spec.start_time_s);
   Check(fields, "size_x_m", spec.size_x_m >= 5 && spec.size_x_m <= 2000, "must be in [5, 2000]");
   Check(fields, "size_y_m", spec.size_y_m >= 5 && spec.size_y_m <= 2000, "must be in [5, 2000]");
-  Check(fields, "start_time_s", spec.start_time_s >= 0 && spec.start_time_s < 2e9,
-        "must be in [0, 2e9)");
+  Check(fields, "start_time_s", spec.start_time_s >= 0 && spec.start_time_s < kMaxStartTimeS,
+        "must be in [0, 2e9): 1970-01-01 to 2033-05-18");
   ReadTerrain(fields.Child("terrain"), spec.terrain);
   ReadStructure(fields.Child("structure"), spec.structure);
   ReadLitter(fields.Child("litter"), spec.litter);

@@ -37,9 +37,12 @@ struct TerrainSpec {
 // Bounds on the counts of a world file (checked when it is read; park_small.yaml lists them).
 inline constexpr int kMaxStructures = 20000;  // trees, rocks, benches, bins, fences, bushes each
 inline constexpr int kMaxItems = 20000;       // litter.count, litter.daily_new, natural.count
-inline constexpr int kMaxRoots = 100000;      // terrain.roots
-inline constexpr int kMaxPatches = 1000;      // leaf and gravel patches, open areas
-inline constexpr int kMaxLitterDay = 3650;    // simulate --litter-day: ten years of days
+// Runs start from 1970-01-01 to 2033-05-18 UTC (start_time_s, --start-time): the bag's stamps
+// stay positive and ROS 2's int32 seconds hold a day-long run.
+inline constexpr double kMaxStartTimeS = 2e9;
+inline constexpr int kMaxRoots = 100000;    // terrain.roots
+inline constexpr int kMaxPatches = 1000;    // leaf and gravel patches, open areas
+inline constexpr int kMaxLitterDay = 3650;  // simulate --litter-day: ten years of days
 
 struct StructureSpec {
   int trees = 30;

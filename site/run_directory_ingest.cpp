@@ -12,6 +12,7 @@
 #include "reconstruct/map_registration.hpp"
 #include "run/run_digest.hpp"
 #include "run/run_files.hpp"
+#include "run/run_name.hpp"
 
 namespace littermap::site {
 namespace {
@@ -75,9 +76,9 @@ RunDirectoryIngestResult IngestRunDirectory(db::SiteDatabase& site,
                                             RunDirectoryIngestOptions options) {
   RunDirectoryIngestResult result;
   const run::RunDirectoryFiles files = run::FindRunDirectoryFiles(run_dir);
-  const std::string name =
-      options.name.empty() ? std::filesystem::absolute(run_dir).filename().string() : options.name;
-  if (options.refuse_name_in_use) CheckNameFree(site, name, run::RunDigest(files));
+  if (!options.name.empty()) run::CheckRunName(options.name, "--name");
+  const std::string name = options.name.empty() ? run::RunNameFromPath(run_dir) : options.name;
+  CheckNameFree(site, name, run::RunDigest(files));
   result.simulator_truth = files.simulator_truth;
   if (files.simulator_truth) {
     options.ingest.drop_unobserved_items = true;

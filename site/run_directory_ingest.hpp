@@ -15,10 +15,10 @@
 namespace littermap::site {
 
 struct RunDirectoryIngestOptions {
-  std::string name;  // the run's name in the site; empty: the directory's name
-  // Refuse the run when the site holds a run of the same name made of other files: the same
-  // survey reprocessed, whose litter the site would count twice.
-  bool refuse_name_in_use = false;
+  // The run's name in the site; empty: from the directory (run/run_name.hpp). A name the site
+  // holds for a run made of other files is refused: the same survey reprocessed, whose litter
+  // the site would count twice, or another run that the report could not tell apart.
+  std::string name;
   PlacementOptions placement;
   IngestOptions ingest;
 };

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bag/bag_writer.hpp"
+#include "bag/image_codec.hpp"
 #include "bag/ros_codec.hpp"
 #include "bag/sensor_roles.hpp"
 #include "bag/verify_messages.hpp"
@@ -215,6 +216,61 @@ TEST(VerifyMessages, ADamagedMessageIsBadInputNamingTopicAndIndex) {
     EXPECT_NE(std::string(error.what()).find("topic '/scan' message #1"), std::string::npos)
         << error.what();
   }
+}
+
+// A colour camera info of 64x48 and, after it, the given colour JPEG and depth PNG (whose
+// camera has no camera info: its size is not checked).
+std::string VerifyImages(const std::filesystem::path& bag, const msg::CompressedImage& colour,
+                         const msg::CompressedImage& depth) {
+  {
+    BagWriter writer(bag);
+    writer.AddTopic<msg::CameraInfo>("/camera/color/camera_info");
+    writer.AddTopic<msg::CompressedImage>("/camera/color/image_raw/compressed");
+    writer.AddTopic<msg::CompressedImage>("/camera/depth/image_raw/compressed");
+    msg::CameraInfo info;
+    info.header.frame_id = "cam";
+    info.width = 64;
+    info.height = 48;
+    writer.WriteMessage("/camera/color/camera_info", kStartNs, info);
+    writer.WriteMessage("/camera/color/image_raw/compressed", kStartNs + 1, colour);
+    writer.WriteMessage("/camera/depth/image_raw/compressed", kStartNs + 2, depth);
+  }
+  BagReader reader(bag);
+  try {
+    const VerifyResult result = VerifyMessages(reader);
+    EXPECT_EQ(result.decoded_images, 2u);
+    return "";
+  } catch (const BadInputError& e) {
+    return e.what();
+  }
+}
+
+TEST(VerifyMessages, DecodesImagesAndChecksTheirSizeAgainstTheCameraInfo) {
+  TempDir dir;
+  msg::Header header;
+  header.frame_id = "cam";
+  const msg::CompressedImage colour =
+      EncodeColorJpeg(cv::Mat(48, 64, CV_8UC3, cv::Scalar(10, 200, 30)), header);
+  const msg::CompressedImage depth =
+      EncodeDepthPng(cv::Mat(48, 64, CV_16UC1, cv::Scalar(1500)), header);
+  EXPECT_EQ(VerifyImages(dir / "good", colour, depth), "");
+
+  msg::CompressedImage cut = depth;  // a PNG cut short
+  cut.data.resize(cut.data.size() / 2);
+  const std::string truncated = VerifyImages(dir / "cut", colour, cut);
+  EXPECT_NE(truncated.find("topic '/camera/depth/image_raw/compressed' message #0"),
+            std::string::npos)
+      << truncated;
+
+  const msg::CompressedImage small =
+      EncodeColorJpeg(cv::Mat(24, 32, CV_8UC3, cv::Scalar::all(90)), header);
+  const std::string resized = VerifyImages(dir / "small", small, depth);
+  EXPECT_NE(resized.find("topic '/camera/color/image_raw/compressed' message #0"),
+            std::string::npos)
+      << resized;
+  EXPECT_NE(resized.find("image of 32x24 pixels, but /camera/color/camera_info says 64x48"),
+            std::string::npos)
+      << resized;
 }
 
 TEST(BagSummary, WhatIsNotABagIsBadInput) {

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+#include <string>
+
 #include "bag/bag_writer.hpp"
 #include "bag/message_stream.hpp"
 #include "support/temp_dir.hpp"
@@ -61,6 +64,32 @@ TEST(MessageStream, TruncatedMessageNamesTopicAndIndex) {
     EXPECT_NE(what.find("'/scan'"), std::string::npos) << what;
     EXPECT_NE(what.find("message #2"), std::string::npos) << what;
     EXPECT_NE(what.find("LaserScan.ranges"), std::string::npos) << what;
+  }
+}
+
+TEST(MessageStream, AScanWithoutBeamDirectionsIsBadInput) {
+  testing::TempDir dir;
+  {
+    BagWriter writer(dir / "bag");
+    writer.AddTopic<msg::LaserScan>("/scan");
+    msg::LaserScan scan;
+    scan.ranges = {1.f, 2.f, 3.f};
+    scan.angle_min = -1.f;
+    scan.angle_increment = 0.01f;
+    writer.WriteMessage("/scan", 1, scan);
+    scan.angle_increment = std::numeric_limits<float>::quiet_NaN();
+    writer.WriteMessage("/scan", 2, scan);
+  }
+  BagReader reader(dir / "bag");
+  MessageStream stream(reader);
+  ASSERT_TRUE(stream.Next().has_value());
+  try {
+    stream.Next();
+    FAIL() << "a LaserScan with a NaN angle_increment was accepted";
+  } catch (const BadInputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("'/scan' message #1"), std::string::npos) << what;
+    EXPECT_NE(what.find("give its beams no directions"), std::string::npos) << what;
   }
 }
 

@@ -13,8 +13,11 @@
 #include <chrono>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include "bag/bag_reader.hpp"
 #include "bag/ros_codec.hpp"
@@ -31,12 +34,20 @@ namespace {
 
 using namespace std::chrono_literals;
 
-// A `littermap capture` process with its stdout and stderr in a file.
+// A `littermap capture` process with its stdout and stderr in a file; with a file size limit
+// (ulimit -f, in 512-byte blocks) its writes fail beyond that size as on a full disk.
 class CaptureProcess {
  public:
-  CaptureProcess(const std::vector<std::string>& arguments, const std::filesystem::path& log)
+  CaptureProcess(const std::vector<std::string>& arguments, const std::filesystem::path& log,
+                 std::optional<int> file_size_limit_blocks = std::nullopt)
       : log_(log) {
     std::vector<std::string> argv_strings = {LITTERMAP_EXECUTABLE, "capture"};
+    if (file_size_limit_blocks) {
+      argv_strings.insert(
+          argv_strings.begin(),
+          {"/bin/sh", "-c",
+           "ulimit -f " + std::to_string(*file_size_limit_blocks) + " && exec \"$0\" \"$@\""});
+    }
     argv_strings.insert(argv_strings.end(), arguments.begin(), arguments.end());
     std::vector<char*> argv;
     for (std::string& s : argv_strings) argv.push_back(s.data());
@@ -200,6 +211,46 @@ TEST(CaptureCli, SigkillKeepsEverythingButTheLastSecond) {
   EXPECT_EQ(static_cast<std::uint64_t>(scans), counts[topics::kScan]);
 }
 
+// The disk fills while recording, with no reserve kept: the recording stops, the bag closes
+// over its last commit and verifies, the exit code says environment, and the summary says what
+// was kept.
+class CaptureCliFullDisk : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(CaptureCliFullDisk, StopsAndKeepsAVerifiedBag) {
+  Sensors sensors;
+  testing::TempDir dir;
+  std::vector<std::string> arguments = sensors.Arguments(dir / "run");
+  arguments.insert(arguments.end(), {"--storage", GetParam(), "--min-free-disk-mb", "0"});
+  // 512 KiB: a second of the camera into sqlite3, a few seconds into zstd-compressed MCAP.
+  CaptureProcess capture(arguments, dir / "log.txt", 1024);
+  ASSERT_TRUE(capture.started());
+  const std::optional<int> status = capture.Wait(60s);
+  ASSERT_TRUE(status.has_value()) << "still recording after 60 s\n" << capture.Log();
+  ASSERT_TRUE(WIFEXITED(*status)) << "ended by signal " << WTERMSIG(*status) << "\n"
+                                  << capture.Log();
+  EXPECT_EQ(WEXITSTATUS(*status), 4) << capture.Log();
+  const std::string log = capture.Log();
+  EXPECT_NE(log.find("writing the bag failed"), std::string::npos) << log;
+  // The cause, from the system (MCAP) or as SQLite words it.
+  EXPECT_TRUE(log.find("File too large") != std::string::npos ||
+              log.find("SQLite error: disk I/O error") != std::string::npos)
+      << log;
+  EXPECT_NE(log.find("messages"), std::string::npos) << log;  // the summary of what was kept
+
+  const testing::CommandResult verify =
+      testing::RunLittermap("info --verify " + testing::Quote(dir / "run"));
+  EXPECT_EQ(verify.exit_code, 0) << verify.output;
+  bag::BagReader reader(dir / "run");
+  auto counts = CountsByTopic(reader);
+  EXPECT_GE(counts[topics::kScan], 10u) << verify.output;
+  EXPECT_GE(counts[topics::kColor], 5u) << verify.output;
+}
+
+INSTANTIATE_TEST_SUITE_P(Storages, CaptureCliFullDisk, ::testing::Values("sqlite3", "mcap"),
+                         [](const ::testing::TestParamInfo<std::string>& storage) {
+                           return storage.param;
+                         });
+
 TEST(CaptureCli, RefusesBadSourcesNamingThem) {
   testing::TempDir dir;
   const auto bag = testing::Quote(dir / "run");
@@ -227,7 +278,7 @@ TEST(CaptureCli, ASensorThatIsNotThereFailsBeforeRecording) {
   testing::TempDir dir;
   const testing::CommandResult result =
       testing::RunLittermap("capture --laser scip://127.0.0.1:1 -o " + testing::Quote(dir / "run"));
-  EXPECT_EQ(result.exit_code, 3) << result.output;
+  EXPECT_EQ(result.exit_code, 4) << result.output;  // the machine's fault, not littermap's
   EXPECT_NE(result.output.find("laser scip://127.0.0.1:1: cannot connect within"),
             std::string::npos)
       << result.output;

@@ -120,5 +120,37 @@ TEST(IngestHeatmapCli, RefusesWhatIsNotASite) {
   EXPECT_EQ(missing.exit_code, 2) << missing.output;
 }
 
+TEST(IngestHeatmapCli, RunNamesAreNeverEmptyNorSilentlyTwiceAndOutputsNeverAFile) {
+  TempDir dir;
+  const auto site = dir / "site.gpkg";
+  ASSERT_EQ(RunLittermap("site init " + site.string() + " --name p").exit_code, 0);
+  WriteRun(dir / "week1", 10.0, 1700000000.0, "can");
+  WriteRun(dir / "other" / "week1", 20.0, 1700005000.0, "cup");
+  const auto slash = RunLittermap("ingest " + site.string() + " " + (dir / "week1").string() + "/");
+  ASSERT_EQ(slash.exit_code, 0) << slash.output;
+  EXPECT_EQ(Text(site, "SELECT name FROM runs"), "week1");
+  // Other results under the same folder name are refused, not stored as a second "week1".
+  const auto twice =
+      RunLittermap("ingest " + site.string() + " " + (dir / "other" / "week1").string());
+  EXPECT_EQ(twice.exit_code, 2) << twice.output;
+  EXPECT_NE(twice.output.find("already holds a run named 'week1' with other results"),
+            std::string::npos)
+      << twice.output;
+  EXPECT_EQ(Integer(site, "SELECT COUNT(*) FROM runs"), 1);
+  const auto renamed = RunLittermap("ingest " + site.string() + " " +
+                                    (dir / "other" / "week1").string() + " --name 'week 1, east'");
+  EXPECT_EQ(renamed.exit_code, 0) << renamed.output;
+
+  std::ofstream(dir / "taken") << "a file, not a folder";
+  const auto file = RunLittermap("heatmap " + site.string() + " -o " + (dir / "taken").string());
+  EXPECT_EQ(file.exit_code, 1) << file.output;
+  EXPECT_NE(file.output.find("-o " + (dir / "taken").string() + ": is a file, not a folder"),
+            std::string::npos)
+      << file.output;
+  const auto root = RunLittermap("report " + site.string() + " -o /");
+  EXPECT_EQ(root.exit_code, 1) << root.output;
+  EXPECT_NE(root.output.find("-o /: holds"), std::string::npos) << root.output;
+}
+
 }  // namespace
 }  // namespace littermap

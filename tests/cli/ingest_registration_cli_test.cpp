@@ -94,10 +94,11 @@ TEST(IngestRegistrationCli, LaterRunsAreMatchedOntoTheSiteMap) {
   EXPECT_NEAR(placed[2], std::atan2(x_axis.y(), x_axis.x()), 0.3 * M_PI / 180);
   EXPECT_GE(placed[3], 0.5);  // the matching ratio is stored
 
-  // By hand: stored as given, with no matching ratio.
+  // By hand: stored as given, with no matching ratio. Other results of the same folder take
+  // another name (the site refuses two different runs both called run2).
   std::ofstream(second / "items.csv", std::ios::app) << "2,cup,3,3,0,0.1\n";
-  const auto by_hand =
-      RunLittermap("ingest " + Quote(site) + " " + Quote(second) + " --transform 100 50 90");
+  const auto by_hand = RunLittermap("ingest " + Quote(site) + " " + Quote(second) +
+                                    " --transform 100 50 90 --name 'run2 by hand'");
   ASSERT_EQ(by_hand.exit_code, 0) << by_hand.output;
   const std::vector<double> manual = Placement(site, 3);
   ASSERT_EQ(manual.size(), 4u);

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <fstream>
 
 #include "core/error.hpp"
@@ -133,6 +135,35 @@ TEST(SiteDatabase, ReopensWithRecordsAndGeometryInTheSiteCrs) {
             1);
   EXPECT_EQ(Text(site.sql(), "PRAGMA integrity_check"), "ok");
   EXPECT_EQ(Text(site.sql(), "PRAGMA foreign_key_check"), "<no row>");
+}
+
+TEST(SiteDatabase, ASiteMissingATableOrColumnIsRefusedWhenOpened) {
+  TempDir dir;
+  { SiteDatabase::Create(dir / "park.gpkg", Options("North park")); }
+  {
+    SqliteDatabase raw(dir / "park.gpkg", SqliteDatabase::Mode::kReadWrite);
+    raw.Execute("ALTER TABLE runs DROP COLUMN reconstruction_quality");
+  }
+  try {
+    SiteDatabase::Open(dir / "park.gpkg");
+    ADD_FAILURE() << "a site without runs.reconstruction_quality opened";
+  } catch (const BadInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no column runs.reconstruction_quality"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(SiteDatabase, OutOfRangeOriginsAndNamesThatAreNotUtf8AreRefused) {
+  TempDir dir;
+  EXPECT_THROW(SiteDatabase::Create(dir / "a.gpkg", Options("a", 32632, 9e8, 9e8, 0)), UsageError);
+  EXPECT_THROW(SiteDatabase::Create(dir / "b.gpkg", Options("b", 32632, NAN, 5334000, 0)),
+               UsageError);
+  EXPECT_THROW(
+      SiteDatabase::Create(dir / "c.gpkg", Options("Park \xC3", 32632, 691000, 5334000, 0)),
+      BadInputError);
+  EXPECT_FALSE(std::filesystem::exists(dir / "a.gpkg"));
+  EXPECT_NO_THROW(SiteDatabase::Create(dir / "d.gpkg", Options("d", 32632, 691000, 5334000, 0)));
 }
 
 TEST(SiteDatabase, ForeignKeysAreEnforced) {

@@ -91,11 +91,16 @@ TEST(HtmlReport, ReportJsonCarriesTheSameFigures) {
   EXPECT_EQ(json["hotspots"][0]["density_by_run"].size(), 3u);
 }
 
-TEST(HtmlReport, AnUnwritableDirectoryIsAUsageError) {
+TEST(HtmlReport, AnOutputFolderBelowAFileIsBadInput) {
   TempDir dir;
   db::SiteDatabase site = CreateFixtureSite(dir / "park.gpkg", "Park");
   std::ofstream(dir / "blocker") << "a file, not a directory";
-  EXPECT_THROW(WriteReportFiles(site, dir / "blocker" / "report", {}), UsageError);
+  try {
+    WriteReportFiles(site, dir / "blocker" / "report", {});
+    ADD_FAILURE() << "a report was written below a file";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::kBadInput) << e.what();
+  }
 }
 
 }  // namespace

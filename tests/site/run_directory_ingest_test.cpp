@@ -62,12 +62,11 @@ TEST_F(RunDirectoryIngestTest, SaysWhatItAddedAndThatAgainChangesNothing) {
             "Run week 1 is already in park.gpkg as run 1; nothing changed");
 }
 
-TEST_F(RunDirectoryIngestTest, RefusesOtherResultsUnderANameInUseWhenAskedTo) {
+TEST_F(RunDirectoryIngestTest, RefusesOtherResultsUnderANameInUse) {
   WriteRun(dir_ / "a" / "run", 3);
   WriteRun(dir_ / "b" / "run", 2);
   RunDirectoryIngestOptions options;
   options.name = "week 1";
-  options.refuse_name_in_use = true;
   IngestRunDirectory(site_, dir_ / "a" / "run", options);
   EXPECT_TRUE(IngestRunDirectory(site_, dir_ / "a" / "run", options).ingest.already_ingested);
   try {
@@ -79,12 +78,15 @@ TEST_F(RunDirectoryIngestTest, RefusesOtherResultsUnderANameInUseWhenAskedTo) {
                   ": already holds a run named 'week 1' with other results (run 1); the site "
                   "keeps it. To add these results as another run, give --name");
   }
-  options.refuse_name_in_use = false;  // as `littermap ingest` does: another run of that name
-  EXPECT_EQ(IngestRunDirectory(site_, dir_ / "b" / "run", options).ingest.run_id, 2);
   options.name = "week 2";
-  options.refuse_name_in_use = true;
-  WriteRun(dir_ / "c" / "run", 1);
-  EXPECT_EQ(IngestRunDirectory(site_, dir_ / "c" / "run", options).ingest.run_id, 3);
+  EXPECT_EQ(IngestRunDirectory(site_, dir_ / "b" / "run", options).ingest.run_id, 2);
+  // Named from their folders, two runs in folders called "run" are not both "run".
+  WriteRun(dir_ / "week3" / "run", 1);
+  WriteRun(dir_ / "week4-survey" / "run", 4);
+  EXPECT_EQ(IngestRunDirectory(site_, dir_ / "week3" / "run/", {}).name, "week3");
+  EXPECT_EQ(IngestRunDirectory(site_, dir_ / "week4-survey" / "run", {}).name, "week4");
+  options.name = std::string("week \xff");
+  EXPECT_THROW(IngestRunDirectory(site_, dir_ / "b" / "run", options), BadInputError);
 }
 
 TEST_F(RunDirectoryIngestTest, CountsTheTruthItemsOutsideTheCameraCoverage) {
