@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <utility>
 
 #include "bag/mcap_records.hpp"
 #include "bag/storage_file.hpp"
@@ -126,10 +127,7 @@ class McapStorageWriter : public StorageFileWriter {
   void Finish() {
     CloseChunk();
     std::vector<std::uint8_t> out;
-    mcap::FieldWriter data_end(out);
-    data_end.U8(static_cast<std::uint8_t>(Opcode::kDataEnd));
-    data_end.U64(4);
-    data_end.U32(0);  // data section CRC: not computed
+    AppendDataEnd(out);
     Put(out);
     out.clear();
 
@@ -176,6 +174,20 @@ class McapStorageWriter : public StorageFileWriter {
       writer.U64(g.length);
       mcap::AppendRecord(out, Opcode::kSummaryOffset, content);
     }
+    End(std::move(out), summary_start, summary_offset_start);
+  }
+
+  static void AppendDataEnd(std::vector<std::uint8_t>& out) {
+    mcap::FieldWriter data_end(out);
+    data_end.U8(static_cast<std::uint8_t>(Opcode::kDataEnd));
+    data_end.U64(4);
+    data_end.U32(0);  // data section CRC: not computed
+  }
+
+  // Writes `out`, then the footer (summary_start 0: no summary section) and the closing magic;
+  // syncs and closes the file.
+  void End(std::vector<std::uint8_t> out, std::uint64_t summary_start,
+           std::uint64_t summary_offset_start) {
     std::vector<std::uint8_t> footer;
     mcap::FieldWriter writer(footer);
     writer.U64(summary_start);
@@ -216,21 +228,8 @@ class McapStorageWriter : public StorageFileWriter {
     }
     position_ = synced_position_;
     std::vector<std::uint8_t> out;
-    mcap::FieldWriter data_end(out);
-    data_end.U8(static_cast<std::uint8_t>(Opcode::kDataEnd));
-    data_end.U64(4);
-    data_end.U32(0);
-    std::vector<std::uint8_t> footer;
-    mcap::FieldWriter writer(footer);
-    writer.U64(0);  // no summary section
-    writer.U64(0);
-    writer.U32(0);
-    mcap::AppendRecord(out, Opcode::kFooter, footer);
-    out.insert(out.end(), mcap::kMagic.begin(), mcap::kMagic.end());
-    Put(out);
-    if (std::fflush(stream_) != 0 || ::fsync(fileno(stream_)) != 0) Fail("cannot sync");
-    std::fclose(stream_);
-    stream_ = nullptr;
+    AppendDataEnd(out);
+    End(std::move(out), 0, 0);
   }
 
   void Put(std::span<const std::uint8_t> bytes) {

@@ -22,20 +22,25 @@ bool DecodeAny(const BagReader& reader, const BagMessage& raw, AnyMessage& out) 
   }
 }
 
-}  // namespace
-
-void ThrowUndecodable(const BagReader& reader, const BagMessage& message,
-                      const std::string& reason) {
+// Both kinds of message carry their topic, index and time under the same names.
+template <typename Message>
+[[noreturn]] void ThrowUndecodableMessage(const BagReader& reader, const Message& message,
+                                          const std::string& reason) {
   throw BadInputError(reader.directory().string() + ": topic '" + message.topic->name +
                       "' message #" + std::to_string(message.index) +
                       " (t=" + std::to_string(message.timestamp_ns) + " ns): " + reason);
 }
 
+}  // namespace
+
+void ThrowUndecodable(const BagReader& reader, const BagMessage& message,
+                      const std::string& reason) {
+  ThrowUndecodableMessage(reader, message, reason);
+}
+
 void ThrowUndecodable(const BagReader& reader, const DecodedMessage& message,
                       const std::string& reason) {
-  throw BadInputError(reader.directory().string() + ": topic '" + message.topic->name +
-                      "' message #" + std::to_string(message.index) +
-                      " (t=" + std::to_string(message.timestamp_ns) + " ns): " + reason);
+  ThrowUndecodableMessage(reader, message, reason);
 }
 
 std::optional<DecodedMessage> MessageStream::Next() {

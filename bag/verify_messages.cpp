@@ -14,8 +14,9 @@ namespace {
 
 constexpr std::uint64_t kProgressEvery = 256;  // messages between progress reports
 
-// Depth when the format or encoding says 16-bit or floating point, as depth cameras publish it;
-// colour otherwise (the way the pipeline's camera roles tell them apart).
+// Depth when the image's own format or encoding says 16-bit or floating point, as depth cameras
+// publish it; colour otherwise. (The pipeline's roles go by topic name, which verification of a
+// bag without roles resolved cannot; the payload says how it decodes.)
 bool IsDepth(const CameraImage& image) {
   if (const auto* compressed = std::get_if<msg::CompressedImage>(&image)) {
     const std::string& f = compressed->format;

@@ -30,6 +30,20 @@ struct PjDeleter {
 using ContextPtr = std::unique_ptr<PJ_CONTEXT, ContextDeleter>;
 using PjPtr = std::unique_ptr<PJ, PjDeleter>;
 
+// A CRS from PROJ's registry with its context (destroyed after it); crs is null when PROJ does
+// not know the code. PROJ's own log is off: libraries never print, the errors say it all.
+struct Crs {
+  ContextPtr context;
+  PjPtr crs;
+};
+
+Crs CreateCrs(const std::string& code) {
+  Crs result{ContextPtr(proj_context_create()), nullptr};
+  proj_log_level(result.context.get(), PJ_LOG_NONE);
+  result.crs.reset(proj_create(result.context.get(), code.c_str()));
+  return result;
+}
+
 std::string Decimal(double value) {
   char text[64];
   std::snprintf(text, sizeof text, "%.10g", value);
@@ -80,9 +94,7 @@ std::optional<int> ParseEpsgCode(const std::string& text, const std::string& wha
 
 SpatialRefSys EpsgSpatialRefSys(int epsg_code) {
   const std::string code = "EPSG:" + std::to_string(epsg_code);
-  ContextPtr context(proj_context_create());
-  proj_log_level(context.get(), PJ_LOG_NONE);  // libraries never print; the error says it all
-  PjPtr crs(proj_create(context.get(), code.c_str()));
+  const auto [context, crs] = CreateCrs(code);
   if (!crs) throw UsageError("--crs " + code + ": not a coordinate reference system PROJ knows");
   if (proj_get_type(crs.get()) != PJ_TYPE_PROJECTED_CRS ||
       !AxesInMetres(context.get(), crs.get())) {
@@ -107,9 +119,7 @@ void CheckSiteOrigin(int epsg_code, double easting_m, double northing_m) {
   if (!std::isfinite(easting_m) || !std::isfinite(northing_m)) {
     throw UsageError(origin + ": easting and northing must be finite numbers of metres in " + code);
   }
-  ContextPtr context(proj_context_create());
-  proj_log_level(context.get(), PJ_LOG_NONE);
-  PjPtr crs(proj_create(context.get(), code.c_str()));
+  const auto [context, crs] = CreateCrs(code);
   double west = 0, south = 0, east = 0, north = 0;
   const char* area = nullptr;
   if (!crs ||

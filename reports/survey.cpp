@@ -147,8 +147,7 @@ SurveyResult RunSurvey(const SurveyOptions& options, const SurveyCallbacks& call
     throw UsageError(options.bag.string() + ": not a run bag directory");
   }
   Survey survey(options, callbacks);
-  if (!options.name.empty()) run::CheckRunName(options.name, "--name");
-  survey.name = options.name.empty() ? run::RunNameFromPath(options.bag) : options.name;
+  survey.name = run::RunName(options.name, options.bag);
   survey.out = options.output_dir.empty() ? fs::path(survey.name + "-survey") : options.output_dir;
   survey.run_dir = survey.out / "run";
   survey.maps_dir = survey.out / "maps";

@@ -24,6 +24,12 @@ std::string RunNameFromPath(const std::filesystem::path& dir) {
   return name;
 }
 
+std::string RunName(const std::string& given, const std::filesystem::path& dir) {
+  if (given.empty()) return RunNameFromPath(dir);
+  CheckRunName(given, "--name");
+  return given;
+}
+
 void CheckRunName(const std::string& name, const std::string& what) {
   if (name.empty()) throw UsageError(what + ": a run name must not be empty");
   if (name.size() > kMaxRunNameBytes) {

@@ -19,4 +19,7 @@ std::string RunNameFromPath(const std::filesystem::path& dir);
 constexpr std::size_t kMaxRunNameBytes = 200;
 void CheckRunName(const std::string& name, const std::string& what);
 
+// The run's name: `given` (--name) checked, or when empty the name of `dir`.
+std::string RunName(const std::string& given, const std::filesystem::path& dir);
+
 }  // namespace littermap::run

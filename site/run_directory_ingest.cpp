@@ -76,8 +76,7 @@ RunDirectoryIngestResult IngestRunDirectory(db::SiteDatabase& site,
                                             RunDirectoryIngestOptions options) {
   RunDirectoryIngestResult result;
   const run::RunDirectoryFiles files = run::FindRunDirectoryFiles(run_dir);
-  if (!options.name.empty()) run::CheckRunName(options.name, "--name");
-  const std::string name = options.name.empty() ? run::RunNameFromPath(run_dir) : options.name;
+  const std::string name = run::RunName(options.name, run_dir);
   CheckNameFree(site, name, run::RunDigest(files));
   result.simulator_truth = files.simulator_truth;
   if (files.simulator_truth) {
