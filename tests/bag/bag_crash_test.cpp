@@ -45,7 +45,7 @@ std::vector<std::uint8_t> Payload(std::uint64_t index) {
 class BagCrash : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(BagCrash, SigkillLosesAtMostTheLastSecond) {
-  testing::TempDir dir;
+  test::TempDir dir;
   const auto bag = dir / "killed";
   int pipe_fds[2];
   ASSERT_EQ(pipe(pipe_fds), 0);

@@ -20,7 +20,7 @@
 namespace littermap::bag {
 namespace {
 
-using testing::TempDir;
+using test::TempDir;
 
 constexpr TimestampNs kStartNs = 1'700'000'000'250'000'000;  // 2023-11-14T22:13:20.25Z
 

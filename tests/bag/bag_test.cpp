@@ -13,7 +13,7 @@
 namespace littermap::bag {
 namespace {
 
-using testing::TempDir;
+using test::TempDir;
 
 std::vector<std::uint8_t> Payload(std::uint64_t seed, std::size_t size) {
   std::vector<std::uint8_t> bytes(size);

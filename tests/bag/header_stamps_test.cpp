@@ -32,7 +32,7 @@ TEST(HeaderStamps, ReadAndWrittenInPlace) {
 }
 
 TEST(HeaderStamps, RecordedStampsReplaceHeadersAndDisagreementIsReported) {
-  testing::TempDir dir;
+  test::TempDir dir;
   {
     BagWriter writer(dir / "bag");
     writer.AddTopic<msg::LaserScan>("/scan");

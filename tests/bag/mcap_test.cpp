@@ -19,9 +19,9 @@
 namespace littermap::bag {
 namespace {
 
-using testing::TempDir;
+using test::TempDir;
 
-std::vector<std::uint8_t> Payload(std::uint64_t seed, std::size_t size) {
+std::vector<std::uint8_t> RunsPayload(std::uint64_t seed, std::size_t size) {
   std::vector<std::uint8_t> bytes(size);
   for (std::size_t i = 0; i < size; ++i) bytes[i] = static_cast<std::uint8_t>(seed * 31 + i / 7);
   return bytes;
@@ -49,7 +49,7 @@ std::vector<Written> WriteBag(const std::filesystem::path& bag, McapCompression 
     const std::string topic = i % 3 == 0 ? "/scan" : i % 3 == 1 ? "/odom" : "/scan2";
     const TimestampNs time =
         1'000'000'000 + static_cast<TimestampNs>(i / 2 * 2) * 1000 + (i % 2 ? -500 : 0);
-    written.push_back({topic, time, Payload(i, 40 + i % 200)});
+    written.push_back({topic, time, RunsPayload(i, 40 + i % 200)});
     writer.Write(topic, time, written.back().data);
   }
   writer.Close();
@@ -333,7 +333,7 @@ TEST(Mcap, ErrorsNameTheFile) {
   TempDir dir;
   std::filesystem::create_directories(dir / "bad");
   std::ofstream(dir / "bad" / "x.mcap") << "not an mcap file at all";
-  testing::ExpectBadInput([&] { BagReader reader(dir / "bad"); }, "x.mcap");
+  test::ExpectBadInput([&] { BagReader reader(dir / "bad"); }, "x.mcap");
 
   WriteBag(dir / "odd", McapCompression::kNone);
   std::string yaml;
@@ -345,7 +345,7 @@ TEST(Mcap, ErrorsNameTheFile) {
   ASSERT_NE(at, std::string::npos) << yaml;
   yaml.replace(at, 24, "storage_identifier: rocksdb");
   std::ofstream(dir / "odd" / "metadata.yaml") << yaml;
-  testing::ExpectBadInput([&] { BagReader reader(dir / "odd"); }, "storage 'rocksdb'");
+  test::ExpectBadInput([&] { BagReader reader(dir / "odd"); }, "storage 'rocksdb'");
 
   BagWriterOptions options;
   options.storage = "parquet";
@@ -365,22 +365,22 @@ TEST(Mcap, StampsTooFarApartAreBadInput) {
     writer.Write("/notes", std::numeric_limits<TimestampNs>::min() + 1000, note);
     writer.Write("/notes", 1040, note);
     writer.Close();
-    testing::ExpectBadInput([&] { BagReader reader(dir / storage); },
-                            "lie further apart than 64-bit nanoseconds reach");
+    test::ExpectBadInput([&] { BagReader reader(dir / storage); },
+                         "lie further apart than 64-bit nanoseconds reach");
   }
 }
 
 TEST(McapCompression, RefusesHostileSizes) {
-  const auto packed = CompressChunk(Payload(1, 1000), McapCompression::kZstd);
-  testing::ExpectBadInput([&] { DecompressChunk(packed, "zstd", 1ull << 40); }, "512 MiB");
+  const auto packed = CompressChunk(RunsPayload(1, 1000), McapCompression::kZstd);
+  test::ExpectBadInput([&] { DecompressChunk(packed, "zstd", 1ull << 40); }, "512 MiB");
   // A size under the limit but far beyond the data costs nothing until the data is there.
-  testing::ExpectBadInput([&] { DecompressChunk(packed, "zstd", 400ull << 20); }, "cut short");
-  testing::ExpectBadInput([&] { DecompressChunk(packed, "zstd", 10); }, "more than the 10");
-  const auto lz4 = CompressChunk(Payload(1, 1000), McapCompression::kLz4);
-  testing::ExpectBadInput([&] { DecompressChunk(lz4, "lz4", 400ull << 20); }, "cut short");
-  testing::ExpectBadInput([&] { DecompressChunk(lz4, "brotli", 1000); }, "'brotli'");
+  test::ExpectBadInput([&] { DecompressChunk(packed, "zstd", 400ull << 20); }, "cut short");
+  test::ExpectBadInput([&] { DecompressChunk(packed, "zstd", 10); }, "more than the 10");
+  const auto lz4 = CompressChunk(RunsPayload(1, 1000), McapCompression::kLz4);
+  test::ExpectBadInput([&] { DecompressChunk(lz4, "lz4", 400ull << 20); }, "cut short");
+  test::ExpectBadInput([&] { DecompressChunk(lz4, "brotli", 1000); }, "'brotli'");
   const ByteBuffer unpacked = DecompressChunk(lz4, "lz4", 1000);
-  EXPECT_TRUE(std::ranges::equal(unpacked.span(), Payload(1, 1000)));
+  EXPECT_TRUE(std::ranges::equal(unpacked.span(), RunsPayload(1, 1000)));
 }
 
 }  // namespace

@@ -14,7 +14,7 @@ namespace littermap::bag {
 namespace {
 
 TEST(MessageStream, DecodesKnownTypesAndWarnsOncePerUnknownTopic) {
-  testing::TempDir dir;
+  test::TempDir dir;
   {
     BagWriter writer(dir / "bag");
     writer.AddTopic<msg::String>("/notes");
@@ -39,7 +39,7 @@ TEST(MessageStream, DecodesKnownTypesAndWarnsOncePerUnknownTopic) {
 }
 
 TEST(MessageStream, TruncatedMessageNamesTopicAndIndex) {
-  testing::TempDir dir;
+  test::TempDir dir;
   {
     BagWriter writer(dir / "bag");
     writer.AddTopic<msg::LaserScan>("/scan");
@@ -68,7 +68,7 @@ TEST(MessageStream, TruncatedMessageNamesTopicAndIndex) {
 }
 
 TEST(MessageStream, AScanWithoutBeamDirectionsIsBadInput) {
-  testing::TempDir dir;
+  test::TempDir dir;
   {
     BagWriter writer(dir / "bag");
     writer.AddTopic<msg::LaserScan>("/scan");
@@ -94,7 +94,7 @@ TEST(MessageStream, AScanWithoutBeamDirectionsIsBadInput) {
 }
 
 TEST(MessageStream, WrongTypeForTopicIsBadInput) {
-  testing::TempDir dir;
+  test::TempDir dir;
   {
     BagWriter writer(dir / "bag");
     writer.AddTopic<msg::String>("/notes");

@@ -62,10 +62,10 @@ TEST(RawImage, DepthInMillimetresAndMetres) {
 TEST(RawImage, ErrorsNameTheEncoding) {
   msg::Image short_data = Raw("rgb8", 4, 4, 12);
   short_data.data.resize(20);
-  testing::ExpectBadInput([&] { DecodeRawColor(short_data); }, "rgb8, 4x4, step 12");
-  testing::ExpectBadInput([&] { DecodeRawColor(Raw("bayer_rggb8", 2, 2, 2)); }, "'bayer_rggb8'");
-  testing::ExpectBadInput([&] { DecodeRawDepthMm(Raw("rgb8", 2, 2, 6)); }, "'rgb8'");
-  testing::ExpectBadInput([&] { DecodeRawColor(Raw("rgb8", 4, 1, 2)); }, "too few");
+  test::ExpectBadInput([&] { DecodeRawColor(short_data); }, "rgb8, 4x4, step 12");
+  test::ExpectBadInput([&] { DecodeRawColor(Raw("bayer_rggb8", 2, 2, 2)); }, "'bayer_rggb8'");
+  test::ExpectBadInput([&] { DecodeRawDepthMm(Raw("rgb8", 2, 2, 6)); }, "'rgb8'");
+  test::ExpectBadInput([&] { DecodeRawColor(Raw("rgb8", 4, 1, 2)); }, "too few");
 }
 
 TEST(RawImage, PairsWithCompressedImages) {

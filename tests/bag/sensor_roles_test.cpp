@@ -57,9 +57,9 @@ TEST(SensorRoles, ARealRobotsTopicsByType) {
 TEST(SensorRoles, TwoLasersNeedAChoice) {
   const BagInfo info = Bag(
       {{"/scan_front", "sensor_msgs/msg/LaserScan"}, {"/scan_rear", "sensor_msgs/msg/LaserScan"}});
-  testing::ExpectBadInput([&] { ResolveSensorRoles(info); },
-                          "2 scan topics (/scan_front, /scan_rear): choose one with --topic "
-                          "scan=TOPIC");
+  test::ExpectBadInput([&] { ResolveSensorRoles(info); },
+                       "2 scan topics (/scan_front, /scan_rear): choose one with --topic "
+                       "scan=TOPIC");
   const auto given = ParseRoleAssignments({"scan=/scan_rear"});
   const SensorRoles roles = ResolveSensorRoles(info, given);
   EXPECT_EQ(roles.topics.scan, "/scan_rear");

@@ -46,7 +46,7 @@ TEST(TransformTree, ComposesChainsAndSkipsMovingTransforms) {
 }
 
 TEST(TransformTree, CameraExtrinsicFromTfLikeFromTfStatic) {
-  testing::TempDir dir;
+  test::TempDir dir;
   Eigen::Isometry3d T_base_optical = Eigen::Isometry3d::Identity();
   T_base_optical.translation() = Eigen::Vector3d(0.2, 0.0, 0.5);
   T_base_optical.linear() =

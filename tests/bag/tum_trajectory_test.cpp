@@ -35,7 +35,7 @@ TEST(TumTrajectory, StampsAreExactDecimalSeconds) {
 }
 
 TEST(TumTrajectory, WriteThenReadRoundTrips) {
-  testing::TempDir dir;
+  test::TempDir dir;
   std::vector<StampedPose> poses = {StampedPoseFromPlanar(1'000'000'001, {1.5, -2.25, 0.75}),
                                     StampedPoseFromPlanar(2'500'000'000, {0, 0, -3.0})};
   poses[1].position_m.z() = 0.125;
@@ -53,7 +53,7 @@ TEST(TumTrajectory, WriteThenReadRoundTrips) {
 }
 
 TEST(TumTrajectory, ReadsTumGroundTruthStyleFiles) {
-  testing::TempDir dir;
+  test::TempDir dir;
   std::ofstream(dir / "groundtruth.txt")
       << "# ground truth trajectory\n# file: 'rgbd_dataset_freiburg2_desk.bag'\n"
          "# timestamp tx ty tz qx qy qz qw\n"
@@ -76,7 +76,7 @@ std::string ReadError(const std::filesystem::path& path) {
 }
 
 TEST(TumTrajectory, MalformedLinesNameLineAndField) {
-  testing::TempDir dir;
+  test::TempDir dir;
   std::ofstream(dir / "a.tum") << "# c\n1.0 0 0 0 0 0 0 1\n2.0 0 zero 0 0 0 0 1\n";
   EXPECT_EQ(ReadError(dir / "a.tum"),
             (dir / "a.tum").string() + ":3: field 'ty': 'zero' is not a finite number");

@@ -7,13 +7,14 @@
 
 #include "bag/bag_reader.hpp"
 #include "core/error.hpp"
+#include "support/never_stop.hpp"
 #include "support/scip_emulator.hpp"
 #include "support/temp_dir.hpp"
 
 namespace littermap::capture {
 namespace {
 
-const std::atomic<bool> kNeverStop{false};
+using test::kNeverStop;
 
 // The UsageError message of `call`, or "" when it throws none.
 template <typename Call>
@@ -75,7 +76,7 @@ TEST(CaptureSources, MakesTheSensorsGivenAndRefusesNone) {
 }
 
 TEST(LiveCapture, WarnsWithoutARobotBeforeRefusingBadOptions) {
-  testing::TempDir dir;
+  test::TempDir dir;
   LiveCaptureOptions options;
   options.sources.laser_uri = "scip://127.0.0.1:1";
   std::vector<std::string> warnings;
@@ -103,10 +104,10 @@ TEST(LiveCapture, WarnsWithoutARobotBeforeRefusingBadOptions) {
 class LiveCaptureStorage : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(LiveCaptureStorage, RecordsAnEmulatedLaserForTheDurationAsked) {
-  testing::ScipEmulatorOptions laser_options;
+  test::ScipEmulatorOptions laser_options;
   laser_options.scan_period_ms = 25;  // 40 Hz
-  testing::ScipEmulator laser(testing::ScipEmulator::Link::kTcp, laser_options);
-  testing::TempDir dir;
+  test::ScipEmulator laser(test::ScipEmulator::Link::kTcp, laser_options);
+  test::TempDir dir;
   LiveCaptureOptions options;
   options.storage = GetParam();
   options.sources.laser_uri = laser.uri();

@@ -22,6 +22,7 @@
 #include "capture/openni2_camera.hpp"
 #include "capture/scip_laser_source.hpp"
 #include "core/error.hpp"
+#include "support/never_stop.hpp"
 #include "support/odometry_emulator.hpp"
 #include "support/scip_emulator.hpp"
 #include "support/temp_dir.hpp"
@@ -136,10 +137,10 @@ bool AnyContains(const std::vector<std::string>& texts, const std::string& part)
   return false;
 }
 
-const std::atomic<bool> kNeverStop{false};
+using test::kNeverStop;
 
 TEST(Recorder, WritesEveryReadingAndACompleteBag) {
-  testing::TempDir dir;
+  test::TempDir dir;
   const RecordingResult result =
       Record(dir / "bag", One(std::make_unique<FakeSource>(FakeScript{})), {}, FastOptions(1.0),
              kNeverStop);
@@ -156,7 +157,7 @@ TEST(Recorder, WritesEveryReadingAndACompleteBag) {
 }
 
 TEST(Recorder, AFullQueueDropsAndCountsTheNewest) {
-  testing::TempDir dir;
+  test::TempDir dir;
   FakeScript script;
   script.burst = 5000;  // far faster than anything is written
   RecorderOptions options = FastOptions(0.5);
@@ -171,7 +172,7 @@ TEST(Recorder, AFullQueueDropsAndCountsTheNewest) {
 }
 
 TEST(Recorder, ReconnectsALostSensorAndNotesTheGap) {
-  testing::TempDir dir;
+  test::TempDir dir;
   FakeScript script;
   script.disconnect_after = 20;
   script.refuse_connects = 3;  // unplugged for about 3 reconnect intervals
@@ -189,7 +190,7 @@ TEST(Recorder, ReconnectsALostSensorAndNotesTheGap) {
 }
 
 TEST(Recorder, ASilentSensorIsReconnected) {
-  testing::TempDir dir;
+  test::TempDir dir;
   FakeScript script;
   script.silent_after = 10;
   const RecordingResult result = Record(dir / "bag", One(std::make_unique<FakeSource>(script)), {},
@@ -201,7 +202,7 @@ TEST(Recorder, ASilentSensorIsReconnected) {
 }
 
 TEST(Recorder, SkipsMalformedReadingsAndReconnectsAConfusedStream) {
-  testing::TempDir dir;
+  test::TempDir dir;
   FakeScript script;
   script.malformed_every = 4;
   const RecordingResult result = Record(dir / "bag", One(std::make_unique<FakeSource>(script)), {},
@@ -222,7 +223,7 @@ TEST(Recorder, SkipsMalformedReadingsAndReconnectsAConfusedStream) {
 }
 
 TEST(Recorder, StopsCleanlyWhenTheDiskIsNearlyFull) {
-  testing::TempDir dir;
+  test::TempDir dir;
   RecorderOptions options = FastOptions(30);
   options.min_free_disk_bytes = std::numeric_limits<std::uint64_t>::max();
   const RecordingResult result =
@@ -235,7 +236,7 @@ TEST(Recorder, StopsCleanlyWhenTheDiskIsNearlyFull) {
 }
 
 TEST(Recorder, StopsOnRequestAndWritesWhatWasQueued) {
-  testing::TempDir dir;
+  test::TempDir dir;
   std::atomic<bool> stop{false};
   std::thread stopper([&] {
     std::this_thread::sleep_for(400ms);
@@ -251,7 +252,7 @@ TEST(Recorder, StopsOnRequestAndWritesWhatWasQueued) {
 }
 
 TEST(Recorder, ASensorThatNeverConnectsFailsAtTheStartLeavingNothing) {
-  testing::TempDir dir;
+  test::TempDir dir;
   RecorderOptions options = FastOptions(1);
   options.connect_timeout_s = 0.3;
   std::vector<std::unique_ptr<SensorSource>> sources;
@@ -268,7 +269,7 @@ TEST(Recorder, ASensorThatNeverConnectsFailsAtTheStartLeavingNothing) {
 }
 
 TEST(Recorder, ASensorThatNeverConnectsLeavesAnEmptyOutputDirectoryEmpty) {
-  testing::TempDir dir;
+  test::TempDir dir;
   const std::filesystem::path prepared = dir / "prepared";
   std::filesystem::create_directory(prepared);  // a bag writer accepts an empty directory
   RecorderOptions options = FastOptions(1);
@@ -282,7 +283,7 @@ TEST(Recorder, ASensorThatNeverConnectsLeavesAnEmptyOutputDirectoryEmpty) {
 }
 
 TEST(Recorder, ABadOutputPathFailsBeforeAnySensorIsWoken) {
-  testing::TempDir dir;
+  test::TempDir dir;
   const std::filesystem::path taken = dir / "taken";
   std::filesystem::create_directory(taken);
   std::ofstream(taken / "earlier_0.db3") << "an earlier run";
@@ -303,11 +304,11 @@ TEST(Recorder, ABadOutputPathFailsBeforeAnySensorIsWoken) {
 }
 
 TEST(Recorder, RecordsEmulatedLaserOdometryAndOpenNi2Camera) {
-  testing::ScipEmulatorOptions laser_options;
+  test::ScipEmulatorOptions laser_options;
   laser_options.scan_period_ms = 25;  // 40 Hz
-  testing::ScipEmulator laser(testing::ScipEmulator::Link::kTcp, laser_options);
-  testing::OdometryEmulator base(testing::OdometryEmulator::Link::kTcp);
-  testing::TempDir dir;
+  test::ScipEmulator laser(test::ScipEmulator::Link::kTcp, laser_options);
+  test::OdometryEmulator base(test::OdometryEmulator::Link::kTcp);
+  test::TempDir dir;
   std::vector<std::unique_ptr<SensorSource>> sources;
   sources.push_back(std::make_unique<ScipLaserSource>(laser.uri()));
   sources.push_back(std::make_unique<OdometrySource>(base.uri()));
@@ -336,7 +337,7 @@ TEST(Recorder, RecordsEmulatedLaserOdometryAndOpenNi2Camera) {
   EXPECT_EQ(scan.ranges.size(), 1081u);  // steps 0..1080 of a UTM-30LX
   EXPECT_NEAR(scan.angle_min, -135.0 * M_PI / 180.0, 1e-4);
   EXPECT_NEAR(scan.angle_increment, 2 * M_PI / 1440, 1e-6);
-  EXPECT_NEAR(scan.ranges[100], testing::ScipEmulatorRangeMm(100, 0) / 1000.0, 0.1);
+  EXPECT_NEAR(scan.ranges[100], test::ScipEmulatorRangeMm(100, 0) / 1000.0, 0.1);
 
   reader.SetTopicFilter({topics::kOdometry});
   TimestampNs previous = 0;
@@ -364,12 +365,12 @@ TEST(Recorder, RecordsEmulatedLaserOdometryAndOpenNi2Camera) {
 }
 
 TEST(Recorder, KeepsRecordingTheOthersWhileTheLaserIsUnplugged) {
-  testing::ScipEmulatorOptions laser_options;
+  test::ScipEmulatorOptions laser_options;
   laser_options.scan_period_ms = 25;
   laser_options.disconnect_after_frames = 20;  // ~0.5 s in
-  testing::ScipEmulator laser(testing::ScipEmulator::Link::kTcp, laser_options);
-  testing::OdometryEmulator base(testing::OdometryEmulator::Link::kTcp);
-  testing::TempDir dir;
+  test::ScipEmulator laser(test::ScipEmulator::Link::kTcp, laser_options);
+  test::OdometryEmulator base(test::OdometryEmulator::Link::kTcp);
+  test::TempDir dir;
   std::vector<std::unique_ptr<SensorSource>> sources;
   sources.push_back(std::make_unique<ScipLaserSource>(laser.uri()));
   sources.push_back(std::make_unique<OdometrySource>(base.uri()));
@@ -386,9 +387,9 @@ TEST(Recorder, KeepsRecordingTheOthersWhileTheLaserIsUnplugged) {
 }
 
 TEST(Recorder, ReadsLaserAndOdometryOverPseudoTerminals) {
-  testing::ScipEmulator laser(testing::ScipEmulator::Link::kPseudoTerminal);
-  testing::OdometryEmulator base(testing::OdometryEmulator::Link::kPseudoTerminal);
-  testing::TempDir dir;
+  test::ScipEmulator laser(test::ScipEmulator::Link::kPseudoTerminal);
+  test::OdometryEmulator base(test::OdometryEmulator::Link::kPseudoTerminal);
+  test::TempDir dir;
   std::vector<std::unique_ptr<SensorSource>> sources;
   sources.push_back(std::make_unique<ScipLaserSource>(laser.uri()));
   sources.push_back(std::make_unique<OdometrySource>(base.uri()));

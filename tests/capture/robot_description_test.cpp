@@ -12,14 +12,14 @@
 namespace littermap::capture {
 namespace {
 
-std::filesystem::path Write(const testing::TempDir& dir, const std::string& text) {
+std::filesystem::path Write(const test::TempDir& dir, const std::string& text) {
   const auto path = dir / "robot.yaml";
   std::ofstream(path) << text;
   return path;
 }
 
 TEST(RobotDescription, MountsBecomeStaticTransforms) {
-  testing::TempDir dir;
+  test::TempDir dir;
   const RobotDescription robot = ReadRobotDescription(Write(dir, R"(
 laser:
   mount: {x_m: 0.15, z_m: 0.30, yaw_deg: 90}
@@ -46,7 +46,7 @@ camera:
 }
 
 TEST(RobotDescription, ErrorsNameTheFileAndKey) {
-  testing::TempDir dir;
+  test::TempDir dir;
   const auto expect_error = [&](const std::string& text, const std::string& part) {
     const auto path = Write(dir, text);
     try {

@@ -23,9 +23,9 @@
 namespace littermap::capture {
 namespace {
 
-using testing::ScipEmulator;
-using testing::ScipEmulatorOptions;
-using testing::ScipEmulatorRangeMm;
+using test::ScipEmulator;
+using test::ScipEmulatorOptions;
+using test::ScipEmulatorRangeMm;
 
 constexpr double kStepRad = 2 * std::numbers::pi / 1440;
 

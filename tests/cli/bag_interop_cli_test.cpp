@@ -18,14 +18,14 @@
 namespace littermap {
 namespace {
 
-using testing::Quote;
-using testing::RunLittermap;
+using test::Quote;
+using test::RunLittermap;
 
 const std::filesystem::path kInteropDir =
     std::filesystem::path(LITTERMAP_TEST_OUTPUT_DIR) / "interop";
 
-testing::CommandResult RunShell(const std::string& command) {
-  testing::CommandResult result;
+test::CommandResult RunShell(const std::string& command) {
+  test::CommandResult result;
   FILE* pipe = popen((command + " 2>&1").c_str(), "r");
   if (pipe == nullptr) return result;
   char buffer[4096];
@@ -36,7 +36,7 @@ testing::CommandResult RunShell(const std::string& command) {
   return result;
 }
 
-testing::CommandResult RunNode(const std::string& script, const std::string& arguments) {
+test::CommandResult RunNode(const std::string& script, const std::string& arguments) {
   return RunShell("node " + Quote(kInteropDir / script) + " " + arguments);
 }
 
@@ -70,7 +70,7 @@ BagContents ReadContents(const std::filesystem::path& path) {
 }
 
 TEST_F(BagInterop, NodeReadsEveryMcapLittermapWritesAndConversionIsLossless) {
-  testing::TempDir dir;
+  test::TempDir dir;
   const auto world = std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples/worlds/park_small.yaml";
   auto result = RunLittermap("simulate --quiet " + Quote(world) + " -o " + Quote(dir / "run") +
                              " --truth " + Quote(dir / "truth") + " --duration 3");
@@ -174,7 +174,7 @@ void ExpectInteropMessages(const std::filesystem::path& path) {
 }
 
 TEST_F(BagInterop, LittermapReadsBagsWrittenInNode) {
-  testing::TempDir dir;
+  test::TempDir dir;
   for (const std::string variant : {"zstd", "lz4", "none", "zstd --no-summary"}) {
     const auto bag = dir / ("node-" + std::to_string(variant.size()) + "-" + variant.substr(0, 3));
     const auto node = RunNode("write_mcap.mjs", Quote(bag) + " " + variant);

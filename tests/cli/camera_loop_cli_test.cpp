@@ -16,9 +16,9 @@
 namespace littermap {
 namespace {
 
-using testing::Ate;
+using test::Ate;
 
-constexpr const char* kWorld = R"(name: lawn
+constexpr const char* kLawnWorldYaml = R"(name: lawn
 seed: 7
 size_x_m: 24
 size_y_m: 16
@@ -40,9 +40,9 @@ truth: {mask_every_n_frames: 0}
 )";
 
 TEST(CameraLoopCli, FramesThatSeeTheStartAgainCloseLoops) {
-  testing::TempDir d;
+  test::TempDir d;
   ASSERT_NO_FATAL_FAILURE(
-      testing::SimulateAndReconstructTwice(d.path(), kWorld, "rgbd_loops: false\n"));
+      test::SimulateAndReconstructTwice(d.path(), kLawnWorldYaml, "rgbd_loops: false\n"));
 
   std::ifstream in(d / "run" / "quality.json");
   const auto rgbd = nlohmann::json::parse(in).at("rgbd");

@@ -113,10 +113,10 @@ std::map<std::string, std::uint64_t> CountsByTopic(bag::BagReader& reader) {
 
 struct Sensors {
   Sensors()
-      : laser(testing::ScipEmulator::Link::kTcp, LaserOptions()),
-        base(testing::OdometryEmulator::Link::kTcp) {}
-  static testing::ScipEmulatorOptions LaserOptions() {
-    testing::ScipEmulatorOptions options;
+      : laser(test::ScipEmulator::Link::kTcp, LaserOptions()),
+        base(test::OdometryEmulator::Link::kTcp) {}
+  static test::ScipEmulatorOptions LaserOptions() {
+    test::ScipEmulatorOptions options;
     options.scan_period_ms = 25;  // 40 Hz
     return options;
   }
@@ -127,8 +127,8 @@ struct Sensors {
             "--robot",    std::string(LITTERMAP_SOURCE_DIR) + "/samples/robot.yaml",
             "-o",         bag.string()};
   }
-  testing::ScipEmulator laser;
-  testing::OdometryEmulator base;
+  test::ScipEmulator laser;
+  test::OdometryEmulator base;
 };
 
 // Emulated sensors and a capture process recording them into DIR/run.
@@ -145,7 +145,7 @@ struct Recording {
   std::filesystem::path bag() const { return dir / "run"; }
 
   Sensors sensors;
-  testing::TempDir dir;
+  test::TempDir dir;
   CaptureProcess capture;
 };
 
@@ -218,7 +218,7 @@ class CaptureCliFullDisk : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(CaptureCliFullDisk, StopsAndKeepsAVerifiedBag) {
   Sensors sensors;
-  testing::TempDir dir;
+  test::TempDir dir;
   std::vector<std::string> arguments = sensors.Arguments(dir / "run");
   arguments.insert(arguments.end(), {"--storage", GetParam(), "--min-free-disk-mb", "0"});
   // 512 KiB: a second of the camera into sqlite3, a few seconds into zstd-compressed MCAP.
@@ -237,8 +237,8 @@ TEST_P(CaptureCliFullDisk, StopsAndKeepsAVerifiedBag) {
       << log;
   EXPECT_NE(log.find("messages"), std::string::npos) << log;  // the summary of what was kept
 
-  const testing::CommandResult verify =
-      testing::RunLittermap("info --verify " + testing::Quote(dir / "run"));
+  const test::CommandResult verify =
+      test::RunLittermap("info --verify " + test::Quote(dir / "run"));
   EXPECT_EQ(verify.exit_code, 0) << verify.output;
   bag::BagReader reader(dir / "run");
   auto counts = CountsByTopic(reader);
@@ -252,8 +252,8 @@ INSTANTIATE_TEST_SUITE_P(Storages, CaptureCliFullDisk, ::testing::Values("sqlite
                          });
 
 TEST(CaptureCli, RefusesBadSourcesNamingThem) {
-  testing::TempDir dir;
-  const auto bag = testing::Quote(dir / "run");
+  test::TempDir dir;
+  const auto bag = test::Quote(dir / "run");
   struct Case {
     std::string arguments, message;
   } cases[] = {
@@ -266,7 +266,7 @@ TEST(CaptureCli, RefusesBadSourcesNamingThem) {
       {"--laser scip://127.0.0.1:1 --truth t -o " + bag, "--truth works with sim: sources only"},
   };
   for (const Case& c : cases) {
-    const testing::CommandResult result = testing::RunLittermap("capture " + c.arguments);
+    const test::CommandResult result = test::RunLittermap("capture " + c.arguments);
     EXPECT_EQ(result.exit_code, 1) << c.arguments << "\n" << result.output;
     EXPECT_NE(result.output.find(c.message), std::string::npos) << c.arguments << "\n"
                                                                 << result.output;
@@ -275,9 +275,9 @@ TEST(CaptureCli, RefusesBadSourcesNamingThem) {
 }
 
 TEST(CaptureCli, ASensorThatIsNotThereFailsBeforeRecording) {
-  testing::TempDir dir;
-  const testing::CommandResult result =
-      testing::RunLittermap("capture --laser scip://127.0.0.1:1 -o " + testing::Quote(dir / "run"));
+  test::TempDir dir;
+  const test::CommandResult result =
+      test::RunLittermap("capture --laser scip://127.0.0.1:1 -o " + test::Quote(dir / "run"));
   EXPECT_EQ(result.exit_code, 4) << result.output;  // the machine's fault, not littermap's
   EXPECT_NE(result.output.find("laser scip://127.0.0.1:1: cannot connect within"),
             std::string::npos)

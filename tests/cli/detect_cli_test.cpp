@@ -14,13 +14,13 @@
 namespace littermap {
 namespace {
 
-using testing::RunLittermap;
+using test::RunLittermap;
 
-using testing::Quote;
+using test::Quote;
 
 // One simulation for all checks: ctest runs every test in its own process.
 TEST(DetectCli, EndToEndOnTheFirst45SecondsOfTheSamplePark) {
-  testing::TempDir d;
+  test::TempDir d;
   const auto world =
       std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "worlds" / "park_small.yaml";
   auto result = RunLittermap("simulate " + Quote(world) + " -o " + Quote(d / "bag") + " --truth " +
@@ -79,7 +79,7 @@ TEST(DetectCli, EndToEndOnTheFirst45SecondsOfTheSamplePark) {
 }
 
 TEST(DetectCli, BadInputNamesTheFile) {
-  testing::TempDir d;
+  test::TempDir d;
   std::filesystem::create_directories(d / "bag");
   std::filesystem::create_directories(d / "run");
   std::ofstream(d / "truth_trajectory.tum") << "1.0 0 0 0 0 0 0 1\n2.0 1 0 0 0 0 0 1\n";

@@ -15,8 +15,8 @@
 namespace littermap {
 namespace {
 
-using testing::RunLittermap;
-using testing::TempDir;
+using test::RunLittermap;
+using test::TempDir;
 
 // Truth: cans 1 and 2, a bottle 3 the camera barely saw, a leaf 4 and a stone 5. Detected: can
 // 1 right, can 2 called a cup, the leaf called a cup (a false positive), the stone as natural,

@@ -20,12 +20,12 @@
 namespace littermap {
 namespace {
 
-using testing::Quote;
-using testing::RunLittermap;
+using test::Quote;
+using test::RunLittermap;
 
 TEST(EvalMapCli, AShakenTrajectoryDrawsTheIntelLabBlurrier) {
-  testing::TempDir dir;
-  ASSERT_NO_FATAL_FAILURE(testing::ImportCarmen("intel", 1, dir.path()));
+  test::TempDir dir;
+  ASSERT_NO_FATAL_FAILURE(test::ImportCarmen("intel", 1, dir.path()));
   // The reference with every other pose turned by 2 degrees and moved by 5 cm.
   std::vector<StampedPose> shaken = bag::ReadTumTrajectory(dir / "ref.tum");
   for (std::size_t i = 0; i < shaken.size(); i += 2) {

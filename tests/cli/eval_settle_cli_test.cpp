@@ -16,13 +16,13 @@
 namespace littermap {
 namespace {
 
-using testing::Ate;
-using testing::Quote;
-using testing::RunLittermap;
+using test::Ate;
+using test::Quote;
+using test::RunLittermap;
 
 TEST(EvalSettleCli, TheCsailReferenceMovesADecimetreLittermapsTrajectoryHardly) {
-  testing::TempDir dir;
-  ASSERT_NO_FATAL_FAILURE(testing::ImportCarmen("csail", 1, dir.path()));
+  test::TempDir dir;
+  ASSERT_NO_FATAL_FAILURE(test::ImportCarmen("csail", 1, dir.path()));
   const auto run =
       RunLittermap("-q reconstruct " + Quote(dir / "bag") + " -o " + Quote(dir / "run"));
   ASSERT_EQ(run.exit_code, 0) << run.output;

@@ -9,22 +9,20 @@
 
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
+#include "support/test_files.hpp"
 
 namespace littermap {
 namespace {
 
-using testing::Quote;
-using testing::RunLittermap;
-using testing::TempDir;
-
-const std::filesystem::path kWorld =
-    std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "worlds" / "park_small.yaml";
+using test::Quote;
+using test::RunLittermap;
+using test::TempDir;
 
 std::string FirstLine(const std::string& text) { return text.substr(0, text.find('\n')); }
 
 // Runs littermap and checks the exit code and that the first line of the output holds `says`.
 void ExpectRefused(const std::string& arguments, int exit_code, const std::string& says) {
-  const testing::CommandResult result = RunLittermap("-q " + arguments);
+  const test::CommandResult result = RunLittermap("-q " + arguments);
   EXPECT_EQ(result.exit_code, exit_code) << arguments << "\n" << result.output;
   EXPECT_NE(FirstLine(result.output).find(says), std::string::npos) << arguments << "\n"
                                                                     << result.output;
@@ -59,8 +57,8 @@ TEST(HostileInputsCli, NamesMustBeUtf8) {
 TEST(HostileInputsCli, StartTimesOutsideTheBagsStampsAreRefused) {
   TempDir dir;
   for (const char* date : {"9999-12-31T23:59:59", "1900-01-01"}) {
-    ExpectRefused("simulate " + Quote(kWorld) + " -o " + Quote(dir / "bag") + " --truth " +
-                      Quote(dir / "truth") + " --duration 1 --start-time " + date,
+    ExpectRefused("simulate " + Quote(test::SampleWorld()) + " -o " + Quote(dir / "bag") +
+                      " --truth " + Quote(dir / "truth") + " --duration 1 --start-time " + date,
                   1, "a run starts from 1970-01-01 to 2033-05-18 UTC");
     EXPECT_FALSE(std::filesystem::exists(dir / "bag"));
   }

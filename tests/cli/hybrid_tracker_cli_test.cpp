@@ -18,9 +18,9 @@
 namespace littermap {
 namespace {
 
-using testing::Ate;
-using testing::Quote;
-using testing::RunLittermap;
+using test::Ate;
+using test::Quote;
+using test::RunLittermap;
 
 nlohmann::json ReadJson(const std::filesystem::path& path) {
   std::ifstream in(path);
@@ -29,7 +29,7 @@ nlohmann::json ReadJson(const std::filesystem::path& path) {
 
 // One simulation for all checks: ctest runs every test in its own process.
 TEST(HybridTrackerCli, CameraKeepsThePoseThroughTiltsThatLoseTheLaserOnlyTracker) {
-  testing::TempDir d;
+  test::TempDir d;
   const auto world =
       std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "worlds" / "park_tilts.yaml";
   auto result = RunLittermap("-q simulate " + Quote(world) + " -o " + Quote(d / "bag") +

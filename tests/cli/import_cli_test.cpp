@@ -9,20 +9,21 @@
 #include "bag/bag_reader.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
+#include "support/test_files.hpp"
 
 namespace littermap {
 namespace {
 
-using testing::RunLittermap;
+using test::RunLittermap;
 
-const std::filesystem::path kDatasets(LITTERMAP_DATASETS_DIR);
+using test::kDatasets;
 
-using testing::Quote;
+using test::Quote;
 
 TEST(ImportCli, CarmenSucceedsWithSummaryAndWarning) {
   const auto log = kDatasets / "carmen" / "orebro-corrected.log.gz";
   ASSERT_TRUE(std::filesystem::exists(log)) << "missing data set " << log;
-  testing::TempDir dir;
+  test::TempDir dir;
   const auto result =
       RunLittermap("import carmen " + Quote(log) + " -o " + Quote(dir / "bag") + " --reference " +
                    Quote(dir / "ref.tum") + " --odometry-noise 3");
@@ -40,7 +41,7 @@ TEST(ImportCli, CarmenSucceedsWithSummaryAndWarning) {
 TEST(ImportCli, QuietSilencesWarningsButNotTheSummary) {
   const auto log = kDatasets / "carmen" / "orebro-corrected.log.gz";
   ASSERT_TRUE(std::filesystem::exists(log)) << "missing data set " << log;
-  testing::TempDir dir;
+  test::TempDir dir;
   const auto result = RunLittermap("import carmen -q " + Quote(log) + " -o " + Quote(dir / "bag"));
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_EQ(result.output.find("warning"), std::string::npos) << result.output;
@@ -48,7 +49,7 @@ TEST(ImportCli, QuietSilencesWarningsButNotTheSummary) {
 }
 
 TEST(ImportCli, MalformedLogExitsTwoNamingFileAndLine) {
-  testing::TempDir dir;
+  test::TempDir dir;
   std::ofstream(dir / "bad.log") << "# fine\nFLASER 2 1.0 2.0 0 0 0 0 0\n";
   const auto result =
       RunLittermap("import carmen " + Quote(dir / "bad.log") + " -o " + Quote(dir / "bag"));
@@ -61,7 +62,7 @@ TEST(ImportCli, MalformedLogExitsTwoNamingFileAndLine) {
 TEST(ImportCli, TruncatedGzipExitsTwo) {
   const auto log = kDatasets / "carmen" / "intel-corrected.log.gz";
   ASSERT_TRUE(std::filesystem::exists(log)) << "missing data set " << log;
-  testing::TempDir dir;
+  test::TempDir dir;
   std::ifstream in(log, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::ofstream(dir / "cut.log.gz", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
@@ -72,7 +73,7 @@ TEST(ImportCli, TruncatedGzipExitsTwo) {
 }
 
 TEST(ImportCli, UsageErrorsExitOne) {
-  testing::TempDir dir;
+  test::TempDir dir;
   const auto log = kDatasets / "carmen" / "orebro-corrected.log.gz";
   EXPECT_EQ(RunLittermap("import carmen " + Quote(log)).exit_code, 1) << "no -o";
   EXPECT_EQ(RunLittermap("import carmen " + Quote(dir / "nope.log") + " -o x").exit_code, 1);
@@ -102,7 +103,7 @@ TEST(ImportCli, HelpDescribesBothImporters) {
 TEST(ImportCli, TumNeedsAKnownCamera) {
   const auto pair = kDatasets / "tum_pair";
   ASSERT_TRUE(std::filesystem::exists(pair / "1.png")) << "missing data set " << pair;
-  testing::TempDir dir;
+  test::TempDir dir;
   const auto sequence = dir / "desk";
   std::filesystem::create_directories(sequence / "rgb");
   std::filesystem::create_directories(sequence / "depth");

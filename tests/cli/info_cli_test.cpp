@@ -12,7 +12,7 @@
 namespace littermap {
 namespace {
 
-using testing::RunLittermap;
+using test::RunLittermap;
 
 void WriteSmallBag(const std::filesystem::path& path) {
   bag::BagWriter writer(path);
@@ -23,7 +23,7 @@ void WriteSmallBag(const std::filesystem::path& path) {
 }
 
 TEST(InfoCli, JsonHasStableKeysAndRightFigures) {
-  testing::TempDir dir;
+  test::TempDir dir;
   WriteSmallBag(dir / "bag");
   const auto result = RunLittermap("info --json " + (dir / "bag").string());
   ASSERT_EQ(result.exit_code, 0) << result.output;
@@ -38,7 +38,7 @@ TEST(InfoCli, JsonHasStableKeysAndRightFigures) {
 }
 
 TEST(InfoCli, TextLooksLikeRos2BagInfo) {
-  testing::TempDir dir;
+  test::TempDir dir;
   WriteSmallBag(dir / "bag");
   const auto result = RunLittermap("info " + (dir / "bag").string());
   ASSERT_EQ(result.exit_code, 0) << result.output;
@@ -49,7 +49,7 @@ TEST(InfoCli, TextLooksLikeRos2BagInfo) {
 }
 
 TEST(InfoCli, ReindexRestoresMissingMetadata) {
-  testing::TempDir dir;
+  test::TempDir dir;
   WriteSmallBag(dir / "bag");
   std::filesystem::remove(dir / "bag" / "metadata.yaml");
   const auto warned = RunLittermap("info " + (dir / "bag").string());
@@ -62,7 +62,7 @@ TEST(InfoCli, ReindexRestoresMissingMetadata) {
 }
 
 TEST(InfoCli, BadInputExitsTwoAndNamesTheFile) {
-  testing::TempDir dir;
+  test::TempDir dir;
   std::filesystem::create_directories(dir / "broken");
   std::ofstream(dir / "broken" / "broken_0.db3") << std::string(4096, '\x42');
   const auto result = RunLittermap("info " + (dir / "broken").string());
@@ -98,7 +98,7 @@ namespace littermap {
 namespace {
 
 TEST(InfoCli, VerifyNamesTheDamagedMessageAndExitsTwo) {
-  testing::TempDir dir;
+  test::TempDir dir;
   {
     bag::BagWriter writer(dir / "bag");
     writer.AddTopic<msg::LaserScan>("/scan");
@@ -110,13 +110,13 @@ TEST(InfoCli, VerifyNamesTheDamagedMessageAndExitsTwo) {
     writer.Write("/custom", 2, bytes);
     writer.Write("/scan", 3, std::span(bytes).first(bytes.size() - 3));
   }
-  const auto result = testing::RunLittermap("info --verify " + (dir / "bag").string());
+  const auto result = test::RunLittermap("info --verify " + (dir / "bag").string());
   EXPECT_EQ(result.exit_code, 2) << result.output;
   EXPECT_NE(result.output.find("'/scan' message #1"), std::string::npos) << result.output;
 
-  testing::TempDir good;
+  test::TempDir good;
   WriteSmallBag(good / "bag");
-  const auto ok = testing::RunLittermap("info --verify --json " + (good / "bag").string());
+  const auto ok = test::RunLittermap("info --verify --json " + (good / "bag").string());
   ASSERT_EQ(ok.exit_code, 0) << ok.output;
   EXPECT_EQ(nlohmann::json::parse(ok.output).at("verified_message_count"), 5);
   EXPECT_EQ(nlohmann::json::parse(ok.output).at("damage"), nlohmann::json::array());
@@ -125,7 +125,7 @@ TEST(InfoCli, VerifyNamesTheDamagedMessageAndExitsTwo) {
 // A damaged MCAP chunk: the rest is verified and shown, the chunk named by file and offset, and
 // the recording is refused (exit 2), whether or not the file has its summary.
 TEST(InfoCli, VerifyNamesADamagedMcapChunkAndExitsTwo) {
-  testing::TempDir dir;
+  test::TempDir dir;
   {
     bag::BagWriterOptions options;
     options.storage = "mcap";

@@ -15,8 +15,8 @@
 namespace littermap {
 namespace {
 
-using testing::RunLittermap;
-using testing::TempDir;
+using test::RunLittermap;
+using test::TempDir;
 
 // A run along y = y0 from x = 0 to x = 40, heading east, 10 Hz at 0.5 m/s, with items next to
 // the path every 4 m.

@@ -14,15 +14,16 @@
 #include "support/carmen_import.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
+#include "support/test_files.hpp"
 
 namespace littermap {
 namespace {
 
-using testing::RunLittermap;
+using test::RunLittermap;
 
-const std::filesystem::path kDatasets(LITTERMAP_DATASETS_DIR);
+using test::kDatasets;
 
-using testing::Quote;
+using test::Quote;
 
 // orebro imported with odometry noise `seed` and reconstructed into dir/run<seed>, with one
 // item at (1, 2) in the run's frame.
@@ -30,7 +31,7 @@ std::filesystem::path ReconstructedRun(const std::filesystem::path& dir, int see
   const auto imported = dir / ("import" + std::to_string(seed));
   const auto run = dir / ("run" + std::to_string(seed));
   std::filesystem::create_directories(imported);
-  EXPECT_NO_FATAL_FAILURE(testing::ImportCarmen("orebro", seed, imported));
+  EXPECT_NO_FATAL_FAILURE(test::ImportCarmen("orebro", seed, imported));
   EXPECT_EQ(
       RunLittermap("-q reconstruct " + Quote(imported / "bag") + " -o " + Quote(run)).exit_code, 0);
   std::ofstream(run / "items.csv") << "id,class,x,y,z,size_m\n1,can,1,2,0,0.1\n";
@@ -60,7 +61,7 @@ std::vector<double> Placement(const std::filesystem::path& site, int run_id) {
 
 TEST(IngestRegistrationCli, LaterRunsAreMatchedOntoTheSiteMap) {
   ASSERT_TRUE(std::filesystem::exists(kDatasets / "carmen" / "orebro-corrected.log.gz"));
-  testing::TempDir dir;
+  test::TempDir dir;
   const auto first = ReconstructedRun(dir.path(), 1);
   const auto second = ReconstructedRun(dir.path(), 2);
   const auto site = dir / "site.gpkg";

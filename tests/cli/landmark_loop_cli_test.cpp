@@ -17,9 +17,9 @@
 namespace littermap {
 namespace {
 
-using testing::Ate;
+using test::Ate;
 
-constexpr const char* kWorld = R"(name: lanes
+constexpr const char* kLanesWorldYaml = R"(name: lanes
 seed: 5
 size_x_m: 60
 size_y_m: 40
@@ -42,9 +42,9 @@ route:
 )";
 
 TEST(LandmarkLoopCli, TrunksCloseTheLoopBetweenLanes) {
-  testing::TempDir d;
+  test::TempDir d;
   ASSERT_NO_FATAL_FAILURE(
-      testing::SimulateAndReconstructTwice(d.path(), kWorld, "landmarks: false\n"));
+      test::SimulateAndReconstructTwice(d.path(), kLanesWorldYaml, "landmarks: false\n"));
 
   std::ifstream in(d / "run" / "quality.json");
   const auto quality = nlohmann::json::parse(in);

@@ -12,22 +12,20 @@
 #include "support/carmen_import.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
+#include "support/test_files.hpp"
 
 namespace littermap {
 namespace {
 
-using testing::RunLittermap;
+using test::RunLittermap;
 
-using testing::Quote;
+using test::Quote;
 
-std::string Slurp(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test::Slurp;
 
 TEST(ReconstructCli, OrebroRunDirectoryAndEvaluation) {
-  testing::TempDir dir;
-  ASSERT_NO_FATAL_FAILURE(testing::ImportCarmen("orebro", 2, dir.path()));
+  test::TempDir dir;
+  ASSERT_NO_FATAL_FAILURE(test::ImportCarmen("orebro", 2, dir.path()));
   const auto run =
       RunLittermap("-q reconstruct " + Quote(dir / "bag") + " -o " + Quote(dir / "run"));
   ASSERT_EQ(run.exit_code, 0) << run.output;
@@ -59,7 +57,7 @@ TEST(ReconstructCli, OrebroRunDirectoryAndEvaluation) {
 }
 
 TEST(ReconstructCli, BadInputExitCodes) {
-  testing::TempDir dir;
+  test::TempDir dir;
   {
     std::ofstream tum(dir / "a.tum");
     tum << "1.0 0 0 0 0 0 0 1\n2.0 1 0 0 0 0 0 1\n3.0 2 0 0 0 0 0 1\n";
@@ -83,7 +81,7 @@ TEST(ReconstructCli, BadInputExitCodes) {
 // A simulated run with a camera: the RGB-D routine's files, one camera pose per frame tracked,
 // and the same run without it (--no-rgbd) writes none of them.
 TEST(ReconstructCli, SimulatedRunWithACameraWritesTheCameraTrack) {
-  testing::TempDir dir;
+  test::TempDir dir;
   const auto world =
       std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "worlds" / "park_small.yaml";
   ASSERT_EQ(RunLittermap("-q simulate " + Quote(world) + " -o " + Quote(dir / "bag") + " --truth " +

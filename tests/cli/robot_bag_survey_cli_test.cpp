@@ -15,19 +15,15 @@
 #include "bag/message_stream.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
+#include "support/test_files.hpp"
 
 namespace littermap {
 namespace {
 
-using testing::Quote;
-using testing::RunLittermap;
+using test::Quote;
+using test::RunLittermap;
 
-std::string Slurp(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::Slurp;
 
 msg::Image RawColour(const msg::CompressedImage& jpeg) {
   const cv::Mat bgr = bag::DecodeColor(jpeg);
@@ -126,7 +122,7 @@ void Survey(const std::filesystem::path& bag, const std::filesystem::path& out) 
 }
 
 TEST(RobotBagSurveyCli, McapAndARobotsTopicsGiveTheSameResults) {
-  testing::TempDir dir;
+  test::TempDir dir;
   const auto world = std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples/worlds/park_small.yaml";
   for (const std::string storage : {"sqlite3", "mcap"}) {
     const auto result = RunLittermap(

@@ -12,16 +12,14 @@
 #include "reconstruct/occupancy_map_file.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
+#include "support/test_files.hpp"
 
 namespace littermap {
 namespace {
 
-using testing::RunLittermap;
+using test::RunLittermap;
 
-const std::filesystem::path kWorld =
-    std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "worlds" / "park_small.yaml";
-
-using testing::Quote;
+using test::Quote;
 
 int CountLines(const std::filesystem::path& path) {
   std::ifstream in(path);
@@ -31,9 +29,10 @@ int CountLines(const std::filesystem::path& path) {
 }
 
 TEST(SimulateCli, SampleWorldGivesBagAndTruth) {
-  testing::TempDir dir;
-  const auto result = RunLittermap("simulate " + Quote(kWorld) + " -o " + Quote(dir / "bag") +
-                                   " --truth " + Quote(dir / "truth") + " --duration 2 --seed 5");
+  test::TempDir dir;
+  const auto result =
+      RunLittermap("simulate " + Quote(test::SampleWorld()) + " -o " + Quote(dir / "bag") +
+                   " --truth " + Quote(dir / "truth") + " --duration 2 --seed 5");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_NE(
       result.output.find("21 scans (urg-04lx), 101 odometry, 101 imu, 20 rgb-d frames, 2.0 s"),
@@ -73,7 +72,7 @@ TEST(SimulateCli, SampleWorldGivesBagAndTruth) {
 
 // `capture` with simulator sources is `simulate`: the same bag for the same world and seed.
 TEST(SimulateCli, AnotherRouteAndRunSeedOfTheSamePark) {
-  testing::TempDir dir;
+  test::TempDir dir;
   const std::filesystem::path large =
       std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "worlds" / "park_large.yaml";
   const auto run = [&](const std::string& name, const std::string& flags) {
@@ -105,9 +104,10 @@ TEST(SimulateCli, AnotherRouteAndRunSeedOfTheSamePark) {
 // TRUTH_DIR/map.yaml: the run's scans at the true poses. Its occupied cells lie on the world's
 // structure (trunks, rocks, benches, bins, fences, bushes), not on the ground.
 TEST(SimulateCli, TruthMapShowsTheWorldsStructure) {
-  testing::TempDir dir;
-  const auto result = RunLittermap("-q simulate " + Quote(kWorld) + " -o " + Quote(dir / "bag") +
-                                   " --truth " + Quote(dir / "truth") + " --duration 8");
+  test::TempDir dir;
+  const auto result =
+      RunLittermap("-q simulate " + Quote(test::SampleWorld()) + " -o " + Quote(dir / "bag") +
+                   " --truth " + Quote(dir / "truth") + " --duration 8");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   const reconstruct::Points2 occupied =
       reconstruct::OccupiedCellCentres(reconstruct::ReadOccupancyMap(dir / "truth" / "map.yaml"));
@@ -137,8 +137,8 @@ TEST(SimulateCli, TruthMapShowsTheWorldsStructure) {
 }
 
 TEST(SimulateCli, CaptureFromSimSourcesIsSimulate) {
-  testing::TempDir dir;
-  const std::string sim = "sim:" + kWorld.string();
+  test::TempDir dir;
+  const std::string sim = "sim:" + test::SampleWorld().string();
   const auto result =
       RunLittermap("capture --camera '" + sim + "' --laser '" + sim + "' -o " + Quote(dir / "bag") +
                    " --duration 1 --seed 5 " + "--contact-sheet " + Quote(dir / "sheet.png"));
@@ -163,8 +163,8 @@ TEST(SimulateCli, CaptureFromSimSourcesIsSimulate) {
 }
 
 TEST(SimulateCli, CaptureRefusesMixingSimulatedAndRealSensors) {
-  testing::TempDir dir;
-  const std::string sim = "sim:" + kWorld.string();
+  test::TempDir dir;
+  const std::string sim = "sim:" + test::SampleWorld().string();
   const auto real =
       RunLittermap("capture --camera openni2:// --laser '" + sim + "' -o " + Quote(dir / "bag"));
   EXPECT_EQ(real.exit_code, 1) << real.output;
@@ -184,7 +184,7 @@ TEST(SimulateCli, CaptureRefusesMixingSimulatedAndRealSensors) {
 }
 
 TEST(SimulateCli, BadWorldExitsTwoNamingFileAndKey) {
-  testing::TempDir dir;
+  test::TempDir dir;
   std::ofstream(dir / "w.yaml") << "route: {waypoints_m: [[0, 0], [5, 0]]}\nlitter: {cont: 3}\n";
   const auto result = RunLittermap("simulate " + Quote(dir / "w.yaml") + " -o " +
                                    Quote(dir / "bag") + " --truth " + Quote(dir / "t"));
@@ -192,11 +192,13 @@ TEST(SimulateCli, BadWorldExitsTwoNamingFileAndKey) {
   EXPECT_NE(result.output.find("w.yaml: litter.cont: unknown key"), std::string::npos)
       << result.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "bag"));
-  EXPECT_EQ(RunLittermap("simulate " + Quote(kWorld) + " -o x").exit_code, 1);  // no --truth
+  EXPECT_EQ(RunLittermap("simulate " + Quote(test::SampleWorld()) + " -o x").exit_code,
+            1);  // no --truth
   // Numbers from the command line are checked where they are read, not wrapped or run on.
   for (const char* flags : {"--seed -1", "--run-seed -2", "--litter-day 1000000000"}) {
-    const auto refused = RunLittermap("simulate " + Quote(kWorld) + " -o " + Quote(dir / "bag") +
-                                      " --truth " + Quote(dir / "t") + " " + flags);
+    const auto refused =
+        RunLittermap("simulate " + Quote(test::SampleWorld()) + " -o " + Quote(dir / "bag") +
+                     " --truth " + Quote(dir / "t") + " " + flags);
     EXPECT_EQ(refused.exit_code, 1) << flags << ": " << refused.output;
     EXPECT_FALSE(std::filesystem::exists(dir / "bag")) << flags;
   }

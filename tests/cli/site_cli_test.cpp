@@ -11,8 +11,8 @@
 namespace littermap {
 namespace {
 
-using testing::RunLittermap;
-using testing::TempDir;
+using test::RunLittermap;
+using test::TempDir;
 
 std::int64_t Integer(const std::filesystem::path& file, const std::string& sql) {
   SqliteDatabase database(file, SqliteDatabase::Mode::kReadOnly);

@@ -15,26 +15,24 @@
 #include "core/sqlite_database.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
+#include "support/test_files.hpp"
 
 namespace littermap {
 namespace {
 
-using testing::Quote;
-using testing::RunLittermap;
-using testing::TempDir;
-
-const std::filesystem::path kWorld =
-    std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples/worlds/park_small.yaml";
+using test::Quote;
+using test::RunLittermap;
+using test::TempDir;
 
 // A short simulated run (the first metres of the sample park's loop) on a given week.
 void Simulate(const std::filesystem::path& dir, int week, double duration_s) {
   char start[32];
   std::snprintf(start, sizeof start, "2026-11-%02dT09:00", 1 + 7 * week);
   const auto result =
-      RunLittermap("-q simulate " + Quote(kWorld) + " -o " + Quote(dir / "bag") + " --truth " +
-                   Quote(dir / "truth") + " --duration " + std::to_string(duration_s) +
-                   " --run-seed " + std::to_string(week + 1) + " --litter-day " +
-                   std::to_string(week) + " --start-time " + start);
+      RunLittermap("-q simulate " + Quote(test::SampleWorld()) + " -o " + Quote(dir / "bag") +
+                   " --truth " + Quote(dir / "truth") + " --duration " +
+                   std::to_string(duration_s) + " --run-seed " + std::to_string(week + 1) +
+                   " --litter-day " + std::to_string(week) + " --start-time " + start);
   ASSERT_EQ(result.exit_code, 0) << result.output;
 }
 

@@ -17,13 +17,13 @@
 namespace littermap {
 namespace {
 
-using testing::Quote;
-using testing::RunLittermap;
+using test::Quote;
+using test::RunLittermap;
 
 TEST(VisualOdometryCli, TumSequenceWithoutLaserIsTrackedByTheCameraAndScored) {
-  testing::TempDir d;
+  test::TempDir d;
   const auto sequence = d / "rgbd_dataset_freiburg3_sim_park";
-  const std::size_t frames = testing::WriteSimTumSequence(
+  const std::size_t frames = test::WriteSimTumSequence(
       std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "worlds" / "park_small.yaml",
       sequence);
   ASSERT_EQ(frames, 301u);

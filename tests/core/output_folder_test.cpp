@@ -11,7 +11,7 @@
 namespace littermap {
 namespace {
 
-using testing::TempDir;
+using test::TempDir;
 
 std::string Refusal(const std::filesystem::path& folder, const OutputFolderCheck& check) {
   try {

@@ -52,7 +52,7 @@ std::string BigText() {
 }
 
 TEST(TextLines, PlainTextWithCrLfBlankAndUnterminatedLines) {
-  testing::TempDir dir;
+  test::TempDir dir;
   WritePlain(dir / "a.txt", "one\r\n\ntwo\nthree");
   EXPECT_EQ(ReadAll(dir / "a.txt"), (std::vector<std::string>{"one", "", "two", "three"}));
   WritePlain(dir / "empty.txt", "");
@@ -60,7 +60,7 @@ TEST(TextLines, PlainTextWithCrLfBlankAndUnterminatedLines) {
 }
 
 TEST(TextLines, GzipReadsLikeThePlainFile) {
-  testing::TempDir dir;
+  test::TempDir dir;
   const std::string text = BigText();
   WritePlain(dir / "big.txt", text);
   WriteGzip(dir / "big.gz", text);
@@ -75,14 +75,14 @@ TEST(TextLines, GzipReadsLikeThePlainFile) {
 }
 
 TEST(TextLines, ConcatenatedGzipMembersAreOneFile) {
-  testing::TempDir dir;
+  test::TempDir dir;
   WriteGzip(dir / "two.gz", "first\nsecond\n");
   WriteGzip(dir / "two.gz", "third\n", "ab");  // appends a second gzip member
   EXPECT_EQ(ReadAll(dir / "two.gz"), (std::vector<std::string>{"first", "second", "third"}));
 }
 
 TEST(TextLines, TruncatedGzipIsBadInputNamingFileAndLine) {
-  testing::TempDir dir;
+  test::TempDir dir;
   WriteGzip(dir / "full.gz", BigText());
   const std::string bytes = ReadBytes(dir / "full.gz");
   WritePlain(dir / "cut.gz", bytes.substr(0, bytes.size() / 2));
@@ -103,7 +103,7 @@ TEST(TextLines, TruncatedGzipIsBadInputNamingFileAndLine) {
 }
 
 TEST(TextLines, TruncatedTrailerIsAlsoAnError) {
-  testing::TempDir dir;
+  test::TempDir dir;
   WriteGzip(dir / "full.gz", "a\nb\n");
   const std::string bytes = ReadBytes(dir / "full.gz");
   WritePlain(dir / "cut.gz", bytes.substr(0, bytes.size() - 4));  // ISIZE of the trailer gone
@@ -111,7 +111,7 @@ TEST(TextLines, TruncatedTrailerIsAlsoAnError) {
 }
 
 TEST(TextLines, CorruptGzipIsBadInput) {
-  testing::TempDir dir;
+  test::TempDir dir;
   WriteGzip(dir / "full.gz", BigText());
   std::string bytes = ReadBytes(dir / "full.gz");
   for (std::size_t i = bytes.size() / 3; i < bytes.size() / 3 + 64; ++i) bytes[i] ^= 0x5a;
@@ -120,7 +120,7 @@ TEST(TextLines, CorruptGzipIsBadInput) {
 }
 
 TEST(TextLines, MissingFileAndOverlongLineAreBadInput) {
-  testing::TempDir dir;
+  test::TempDir dir;
   EXPECT_THROW(TextLineReader(dir / "nope.txt"), BadInputError);
   WritePlain(dir / "long.txt", "short\n" + std::string(5000, 'y') + "\n");
   TextLineReader reader(dir / "long.txt", {.max_line_bytes = 1000});

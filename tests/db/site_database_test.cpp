@@ -14,7 +14,7 @@
 namespace littermap::db {
 namespace {
 
-using littermap::testing::TempDir;
+using littermap::test::TempDir;
 
 SiteOptions Options(const std::string& name, std::optional<int> epsg = std::nullopt,
                     double easting = 0, double northing = 0, double rotation_deg = 0) {

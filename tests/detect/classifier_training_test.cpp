@@ -18,7 +18,7 @@ namespace littermap::detect {
 namespace {
 
 // Red boxes (cans), yellow discs (natural) and brown blobs (clutter), with colour noise.
-ObjectSample MakeSample(const std::string& label, std::mt19937& random) {
+ObjectSample MakeTrainingSample(const std::string& label, std::mt19937& random) {
   std::normal_distribution<double> noise(0.0, 8.0);
   std::uniform_int_distribution<int> extra(0, 12);
   const int size = 24 + extra(random);
@@ -51,20 +51,20 @@ ObjectSample MakeSample(const std::string& label, std::mt19937& random) {
   return s;
 }
 
-std::vector<ObjectSample> MakeSamples(int per_class, unsigned seed) {
+std::vector<ObjectSample> MakeTrainingSamples(int per_class, unsigned seed) {
   std::mt19937 random(seed);
   std::vector<ObjectSample> samples;
   for (int i = 0; i < per_class; ++i) {
     for (const char* label : {"can", "natural", "clutter"})
-      samples.push_back(MakeSample(label, random));
+      samples.push_back(MakeTrainingSample(label, random));
   }
   return samples;
 }
 
 TEST(ClassifierTraining, TrainsOnEveryDirectoryAndSavesTheModel) {
-  testing::TempDir dir;
-  WriteSamples(dir / "a", MakeSamples(10, 1));
-  WriteSamples(dir / "b", MakeSamples(5, 2));
+  test::TempDir dir;
+  WriteSamples(dir / "a", MakeTrainingSamples(10, 1));
+  WriteSamples(dir / "b", MakeTrainingSamples(5, 2));
   ClassifierOptions options;
   options.trees = 20;
   const ClassifierTraining training =
@@ -87,14 +87,14 @@ TEST(ClassifierTraining, TrainsOnEveryDirectoryAndSavesTheModel) {
 }
 
 TEST(ClassifierTraining, ScoresEveryMethodOnHeldOutSamples) {
-  testing::TempDir dir;
-  WriteSamples(dir / "a", MakeSamples(15, 3));
+  test::TempDir dir;
+  WriteSamples(dir / "a", MakeTrainingSamples(15, 3));
   ClassifierOptions options;
   options.trees = 20;
   const ClassifierTraining training =
       TrainClassifier({(dir / "a").string()}, dir / "m.yml.gz", options);
   const ClassifierValidation validation =
-      ValidateClassifier(training.classifier, MakeSamples(10, 4));
+      ValidateClassifier(training.classifier, MakeTrainingSamples(10, 4));
   EXPECT_EQ(validation.samples, 30u);
   ASSERT_EQ(validation.methods.size(), 5u);
   EXPECT_EQ(validation.methods.front().method, ClassifierMethod::kNaiveBayes);
@@ -113,9 +113,9 @@ TEST(ClassifierTraining, ScoresEveryMethodOnHeldOutSamples) {
 }
 
 TEST(ClassifierTraining, RefusesWhatItCannotTrainOn) {
-  testing::TempDir dir;
+  test::TempDir dir;
   EXPECT_THROW(TrainClassifier({(dir / "missing").string()}, dir / "m.yml.gz", {}), BadInputError);
-  auto samples = MakeSamples(3, 5);
+  auto samples = MakeTrainingSamples(3, 5);
   for (auto& sample : samples) sample.label = "can";
   WriteSamples(dir / "one", samples);
   EXPECT_THROW(TrainClassifier({(dir / "one").string()}, dir / "m.yml.gz", {}), UsageError);

@@ -15,7 +15,7 @@ namespace littermap::detect {
 namespace {
 
 TEST(DebugFrames, WritesAPictureOfEveryFrame) {
-  testing::TempDir dir;
+  test::TempDir dir;
   const FrameCallback write = DebugFrameWriter(dir / "frames" / "run");
   ASSERT_TRUE(write);
   EXPECT_TRUE(std::filesystem::is_directory(dir / "frames" / "run"));  // created at once
@@ -32,7 +32,7 @@ TEST(DebugFrames, WritesAPictureOfEveryFrame) {
 TEST(DebugFrames, NothingWithoutADirectory) { EXPECT_FALSE(DebugFrameWriter({})); }
 
 TEST(DebugFrames, AFileThatCannotBeWrittenIsNamed) {
-  testing::TempDir dir;
+  test::TempDir dir;
   const FrameCallback write = DebugFrameWriter(dir / "frames");
   std::filesystem::create_directories(dir / "frames" / "frame_000001.png");  // in the way
   RgbdFrame frame;

@@ -12,16 +12,16 @@
 namespace littermap::detect {
 namespace {
 
-using testing::RenderScene;
-using testing::SceneBox;
-using testing::SyntheticScene;
+using test::RenderScene;
+using test::SceneBox;
+using test::SyntheticScene;
 
 FrameSegmentation Segment(const SyntheticScene& scene) {
   const CameraIntrinsics K;
   cv::Mat colour, depth;
   RenderScene(scene, K, &colour, &depth);
   FrameSegmenter segmenter(SegmentationOptions{});
-  return segmenter.Segment(colour, depth, K, testing::CameraPose().cast<float>());
+  return segmenter.Segment(colour, depth, K, test::CameraPose().cast<float>());
 }
 
 TEST(FrameSegmenter, FindsTheGroundAndNothingElseOnAnEmptyLawn) {

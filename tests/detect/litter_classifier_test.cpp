@@ -106,7 +106,7 @@ TEST(LitterClassifier, LearnsSeparableClassesAndGeneralisesToNewSamples) {
 }
 
 TEST(LitterClassifier, SavedModelClassifiesExactlyAsTheTrainedOne) {
-  testing::TempDir dir;
+  test::TempDir dir;
   const auto classifier = LitterClassifier::Train(MakeSamples(15, 3), SmallForest(), nullptr);
   classifier.Save(dir / "model.yml.gz");
   const auto loaded = LitterClassifier::Load(dir / "model.yml.gz");
@@ -121,7 +121,7 @@ TEST(LitterClassifier, RefusesOneClassAndForeignFiles) {
   EXPECT_NO_THROW(LitterClassifier::Train(samples, SmallForest(), nullptr));  // K = 2 here
   for (auto& sample : samples) sample.label = "can";
   EXPECT_THROW(LitterClassifier::Train(samples, SmallForest(), nullptr), UsageError);
-  testing::TempDir dir;
+  test::TempDir dir;
   std::ofstream(dir / "model.yml") << "%YAML:1.0\nformat: something else\n";
   try {
     LitterClassifier::Load(dir / "model.yml");
@@ -133,7 +133,7 @@ TEST(LitterClassifier, RefusesOneClassAndForeignFiles) {
 }
 
 TEST(ObjectSamples, RoundTripThroughTheSampleDirectoryAndNameBadColumns) {
-  testing::TempDir dir;
+  test::TempDir dir;
   const auto samples = MakeSamples(2, 6);
   WriteSamples(dir / "s", samples);
   const auto read = ReadSamples(dir / "s");

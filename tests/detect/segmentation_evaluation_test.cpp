@@ -15,7 +15,7 @@
 namespace littermap::detect {
 namespace {
 
-using testing::ExpectBadInput;
+using test::ExpectBadInput;
 
 TEST(SegmentationEvaluation, ReportsPerClass) {
   SegmentationEvaluation evaluation;
@@ -43,7 +43,7 @@ void WriteTruth(const std::filesystem::path& dir, const std::string& litter_id,
 }
 
 TEST(SegmentationEvaluation, RefusesTruthItCannotUse) {
-  testing::TempDir dir;
+  test::TempDir dir;
   WriteTruth(dir / "a", "x7", "0,1,masks/frame_000000.png\n10,2,masks/frame_000010.png\n");
   ExpectBadInput([&] { EvaluateSegmentation(dir / "no_bag", dir / "a", {}); },
                  (dir / "a").string() + ": object id 'x7' is not an integer");

@@ -15,7 +15,7 @@
 #include "detect/camera_intrinsics.hpp"
 #include "sim/camera_model.hpp"
 
-namespace littermap::testing {
+namespace littermap::test {
 
 struct SceneBox {
   Eigen::Vector3d min_m, max_m;  // level frame
@@ -80,4 +80,4 @@ inline void RenderScene(const SyntheticScene& scene, const detect::CameraIntrins
   }
 }
 
-}  // namespace littermap::testing
+}  // namespace littermap::test

@@ -21,7 +21,7 @@
 namespace littermap::eval {
 namespace {
 
-using testing::ExpectBadInput;
+using test::ExpectBadInput;
 
 constexpr double kTolerance = 1e-12;
 
@@ -241,7 +241,7 @@ TEST(DetectionMetrics, InvalidRadiusIsAUsageError) {
 }
 
 TEST(DetectionMetricsFiles, ReadersFindColumnsByName) {
-  testing::TempDir dir;
+  test::TempDir dir;
   WriteFile(dir / "litter.csv", "id,class,x,y,z,size_m\r\n7,can,1.0,2.0,0.05,0.12\r\n");
   const auto truth = ReadTruthObjects(dir / "litter.csv", true);
   ASSERT_EQ(truth.size(), 1u);
@@ -257,7 +257,7 @@ TEST(DetectionMetricsFiles, ReadersFindColumnsByName) {
 }
 
 TEST(DetectionMetricsFiles, ErrorsNameFileLineAndColumn) {
-  testing::TempDir dir;
+  test::TempDir dir;
   const std::string visible = (dir / "visible.csv").string();
   WriteFile(visible, "frame,object_id,pixels\n0,3,-4\n");
   ExpectBadInput([&] { ReadVisiblePixels(visible); }, visible + ":2: column 'pixels'");

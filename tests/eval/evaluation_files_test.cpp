@@ -21,7 +21,7 @@
 namespace littermap::eval {
 namespace {
 
-using testing::ExpectBadInput;
+using test::ExpectBadInput;
 
 // A 4 m straight line and a turn, one pose per 0.1 s, shifted by (dx, dy) and turned by yaw.
 std::vector<StampedPose> Path(double dx, double dy, double yaw_rad) {
@@ -42,7 +42,7 @@ void Write(const std::filesystem::path& path, const std::string& text) {
 }
 
 TEST(EvaluationFiles, TrajectoryFilesGradeAsTheirPoses) {
-  testing::TempDir dir;
+  test::TempDir dir;
   bag::WriteTumTrajectory(dir / "est.tum", Path(1, 2, 0.3));
   bag::WriteTumTrajectory(dir / "ref.tum", Path(0, 0, 0));
   const TrajectoryMetrics metrics = EvaluateTrajectory(dir / "est.tum", dir / "ref.tum", {});
@@ -53,7 +53,7 @@ TEST(EvaluationFiles, TrajectoryFilesGradeAsTheirPoses) {
 }
 
 TEST(EvaluationFiles, RelationErrorsNameTheTrajectoryFile) {
-  testing::TempDir dir;
+  test::TempDir dir;
   bag::WriteTumTrajectory(dir / "traj.tum", Path(0, 0, 0));
   std::vector<double> stamps;
   for (int i = 0; i < 60; ++i) stamps.push_back(1.0 + 0.1 * i);
@@ -69,7 +69,7 @@ TEST(EvaluationFiles, RelationErrorsNameTheTrajectoryFile) {
 }
 
 TEST(EvaluationFiles, TruthFilesReadInOrder) {
-  testing::TempDir dir;
+  test::TempDir dir;
   Write(dir / "litter.csv", "id,class,x,y\n1,can,1,0\n2,cup,5,5\n");
   Write(dir / "natural.csv", "id,class,x,y\n3,stone,2,0\n");
   Write(dir / "visible.csv", "frame,object_id,pixels\n0,1,500\n0,3,20\n");
@@ -88,7 +88,7 @@ TEST(EvaluationFiles, TruthFilesReadInOrder) {
 }
 
 TEST(EvaluationFiles, ItemsFollowTheAlignmentOfTheirRun) {
-  testing::TempDir dir;
+  test::TempDir dir;
   // The run's map frame is the truth's turned by 0.3 rad and moved by (1, 2).
   bag::WriteTumTrajectory(dir / "est.tum", Path(1, 2, 0.3));
   bag::WriteTumTrajectory(dir / "ref.tum", Path(0, 0, 0));

@@ -17,11 +17,11 @@
 namespace littermap::eval {
 namespace {
 
-using testing::kBaseLaser;
-using testing::kDeg;
-using testing::Perturbed;
-using testing::RoomRun;
-using testing::RoomScans;
+using test::kBaseLaser;
+using test::kDeg;
+using test::Perturbed;
+using test::RoomRun;
+using test::RoomScans;
 
 TEST(MapSharpness, TruePosesDrawTheThinnestWalls) {
   const RoomScans run = RoomRun();

@@ -13,7 +13,7 @@ namespace littermap::heatmap {
 namespace {
 
 TEST(DensityPreview, DrawsTheSiteMapOverTheDensity) {
-  testing::TempDir dir;
+  test::TempDir dir;
   GridGeometry grid;
   grid.min_x_m = 0;
   grid.max_y_m = 20;

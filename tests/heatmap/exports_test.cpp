@@ -11,18 +11,14 @@
 #include "heatmap/hotspots.hpp"
 #include "heatmap/wgs84_transform.hpp"
 #include "support/temp_dir.hpp"
+#include "support/test_files.hpp"
 
 namespace littermap::heatmap {
 namespace {
 
-using littermap::testing::TempDir;
+using littermap::test::TempDir;
 
-std::string Slurp(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::Slurp;
 
 TEST(Wgs84Transform, UtmCentralMeridianOnTheEquator) {
   // UTM zone 33N: false easting 500 km on the central meridian 15 deg E.

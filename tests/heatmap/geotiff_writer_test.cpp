@@ -17,7 +17,7 @@
 namespace littermap::heatmap {
 namespace {
 
-using littermap::testing::TempDir;
+using littermap::test::TempDir;
 
 // 600 x 400 cells of 0.5 m, north-west corner at (500000, 5000200); value = column + 1000 row,
 // and a nodata block in the north-west corner.

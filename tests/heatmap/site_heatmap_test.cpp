@@ -73,7 +73,7 @@ double Pearson(const std::vector<double>& a, const std::vector<double>& b) {
 }
 
 TEST(SiteHeatmap, ThreeRunsCorrelateWithTheTrueDensity) {
-  littermap::testing::TempDir dir;
+  littermap::test::TempDir dir;
   db::SiteOptions site_options;
   site_options.name = "synthetic park";
   db::SiteDatabase site = db::SiteDatabase::Create(dir / "park.gpkg", site_options);
@@ -116,7 +116,7 @@ TEST(SiteHeatmap, ThreeRunsCorrelateWithTheTrueDensity) {
 // three routes with three run seeds. Items are the world's litter the camera covered (a perfect
 // detector); the truth is the kernel density of all the world's litter.
 TEST(SiteHeatmap, ThreeSimulatorRunsOfOneParkCorrelateWithItsLitter) {
-  littermap::testing::TempDir dir;
+  littermap::test::TempDir dir;
   db::SiteOptions site_options;
   site_options.name = "park_large";
   db::SiteDatabase site = db::SiteDatabase::Create(dir / "park.gpkg", site_options);

@@ -30,7 +30,7 @@ struct BagContents {
   std::vector<msg::TFMessage> tf_static;
 };
 
-BagContents ReadBack(const std::filesystem::path& bag) {
+BagContents ReadContents(const std::filesystem::path& bag) {
   BagContents contents;
   bag::BagReader reader(bag);
   while (auto message = reader.Next()) {
@@ -54,7 +54,7 @@ TimestampNs StampNs(const msg::Time& time) {
 TEST(CarmenImport, IntelReadsBackFromTheBag) {
   const auto log_path = CarmenLogPath("intel-corrected.log.gz");
   ASSERT_TRUE(std::filesystem::exists(log_path)) << "missing data set " << log_path;
-  testing::TempDir dir;
+  test::TempDir dir;
   CarmenImportOptions options;
   options.reference_path = dir / "ref.tum";
   const CarmenImportResult result = ImportCarmenLog(log_path, dir / "bag", options);
@@ -69,7 +69,7 @@ TEST(CarmenImport, IntelReadsBackFromTheBag) {
   ASSERT_EQ(result.warnings.size(), 1u);
   EXPECT_NE(result.warnings[0].find("4 of 910"), std::string::npos) << result.warnings[0];
 
-  const BagContents bag = ReadBack(dir / "bag");
+  const BagContents bag = ReadContents(dir / "bag");
   ASSERT_EQ(bag.scans.size(), 910u);
   ASSERT_EQ(bag.odometry.size(), 910u);
   ASSERT_EQ(bag.tf_static.size(), 1u);
@@ -124,7 +124,7 @@ TEST(CarmenImport, EveryLogMatchesTheReadmeTable) {
     SCOPED_TRACE(facts.file);
     const auto log_path = CarmenLogPath(facts.file);
     ASSERT_TRUE(std::filesystem::exists(log_path)) << "missing data set " << log_path;
-    testing::TempDir dir;
+    test::TempDir dir;
     const CarmenImportResult result = ImportCarmenLog(log_path, dir / "bag");
     EXPECT_EQ(result.scan_count, facts.scans);
     EXPECT_EQ(result.beam_count_min, facts.beams);
@@ -148,13 +148,13 @@ TEST(CarmenImport, EveryLogMatchesTheReadmeTable) {
 TEST(CarmenImport, CsailGetsSynthesisedMonotonicStamps) {
   const auto log_path = CarmenLogPath("csail-corrected.log.gz");
   ASSERT_TRUE(std::filesystem::exists(log_path)) << "missing data set " << log_path;
-  testing::TempDir dir;
+  test::TempDir dir;
   const CarmenImportResult result = ImportCarmenLog(log_path, dir / "bag");
   EXPECT_TRUE(result.stamps_synthesised);
   EXPECT_GE(result.stamps_changed, 405u);
   ASSERT_FALSE(result.warnings.empty());
   EXPECT_NE(result.warnings[0].find("synthesised"), std::string::npos) << result.warnings[0];
-  const BagContents bag = ReadBack(dir / "bag");
+  const BagContents bag = ReadContents(dir / "bag");
   ASSERT_EQ(bag.scans.size(), 406u);
   for (std::size_t i = 1; i < bag.scans.size(); ++i) {
     ASSERT_GT(bag.scan_times[i], bag.scan_times[i - 1]) << "scan " << i;
@@ -163,7 +163,7 @@ TEST(CarmenImport, CsailGetsSynthesisedMonotonicStamps) {
 }
 
 TEST(CarmenImport, RobotLaser1AnglesAndLaserOffsetReachTheBag) {
-  testing::TempDir dir;
+  test::TempDir dir;
   // The laser is 0.2 m ahead of the robot centre, turned by 0.1 rad; the robot turns in place.
   std::ofstream log(dir / "robot.log");
   log.precision(15);
@@ -180,7 +180,7 @@ TEST(CarmenImport, RobotLaser1AnglesAndLaserOffsetReachTheBag) {
   EXPECT_NEAR(result.mounting.T_base_laser.x_m, 0.2, 1e-9);
   EXPECT_NEAR(result.mounting.T_base_laser.y_m, 0.0, 1e-9);
   EXPECT_NEAR(result.mounting.T_base_laser.theta_rad, 0.1, 1e-9);
-  const BagContents bag = ReadBack(dir / "bag");
+  const BagContents bag = ReadContents(dir / "bag");
   ASSERT_EQ(bag.scans.size(), 3u);
   EXPECT_FLOAT_EQ(bag.scans[0].angle_min, -1.0f);
   EXPECT_FLOAT_EQ(bag.scans[0].angle_increment, 0.5f);
@@ -192,7 +192,7 @@ TEST(CarmenImport, RobotLaser1AnglesAndLaserOffsetReachTheBag) {
 
 TEST(CarmenImport, ConstantPoseOffsetWinsOverADisagreeingParam) {
   // As in freiburg-101 and freiburg-campus: the PARAM says -0.04 m, the poses say 0.
-  testing::TempDir dir;
+  test::TempDir dir;
   std::ofstream(dir / "a.log")
       << "PARAM robot_frontlaser_offset -0.04 nohost 0\n"
          "FLASER 3 1 2 3 0 0 0 0 0 0 1.0\nFLASER 3 1 2 3 1 0 0 1 0 0 2.0\n";
@@ -206,7 +206,7 @@ TEST(CarmenImport, ConstantPoseOffsetWinsOverADisagreeingParam) {
 }
 
 TEST(CarmenImport, ParamOffsetIsUsedWhenThePosesDisagree) {
-  testing::TempDir dir;
+  test::TempDir dir;
   std::ofstream(dir / "a.log") << "PARAM robot_frontlaser_offset 0.25 nohost 0\n"
                                   "FLASER 3 1 2 3 0.2 0 0 0 0 0 1.0\nFLASER 3 1 2 3 0.3 0 0 0 0 0 "
                                   "2.0\nFLASER 3 1 2 3 0.26 0 0 0 0 0 3.0\n";
@@ -220,7 +220,7 @@ TEST(CarmenImport, ParamOffsetIsUsedWhenThePosesDisagree) {
 }
 
 TEST(CarmenImport, MalformedLogFailsBeforeCreatingTheBag) {
-  testing::TempDir dir;
+  test::TempDir dir;
   std::ofstream(dir / "bad.log") << "FLASER 3 1 2 3 0 0 0 0 0 0 1.0\nFLASER 3 1 oops 3 0 0 0 0 0 0 "
                                     "2.0\n";
   try {
@@ -237,7 +237,7 @@ TEST(CarmenImport, MalformedLogFailsBeforeCreatingTheBag) {
 TEST(CarmenImport, TruncatedGzipIsBadInputAndLeavesNoBag) {
   const auto log_path = CarmenLogPath("aces-corrected.log.gz");
   ASSERT_TRUE(std::filesystem::exists(log_path)) << "missing data set " << log_path;
-  testing::TempDir dir;
+  test::TempDir dir;
   std::ifstream in(log_path, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::ofstream(dir / "cut.log.gz", std::ios::binary) << bytes.substr(0, bytes.size() * 2 / 3);
@@ -254,7 +254,7 @@ TEST(CarmenImport, TruncatedGzipIsBadInputAndLeavesNoBag) {
 }
 
 TEST(CarmenImport, FailedBagLeavesNoReferenceBehind) {
-  testing::TempDir dir;
+  test::TempDir dir;
   std::ofstream(dir / "a.log") << "FLASER 3 1 2 3 0 0 0 0 0 0 1.0\n";
   std::filesystem::create_directories(dir / "bag");
   std::ofstream(dir / "bag" / "precious.txt") << "not a bag";
@@ -266,7 +266,7 @@ TEST(CarmenImport, FailedBagLeavesNoReferenceBehind) {
 }
 
 TEST(CarmenImport, LogWithoutScansIsBadInput) {
-  testing::TempDir dir;
+  test::TempDir dir;
   std::ofstream(dir / "odom.log") << "ODOM 0 0 0 0 0 0 1\n";
   EXPECT_THROW(ImportCarmenLog(dir / "odom.log", dir / "bag"), BadInputError);
 }
@@ -274,13 +274,13 @@ TEST(CarmenImport, LogWithoutScansIsBadInput) {
 TEST(CarmenImport, NoisyOdometryStartsAtTheReferenceAndDrifts) {
   const auto log_path = CarmenLogPath("orebro-corrected.log.gz");
   ASSERT_TRUE(std::filesystem::exists(log_path)) << "missing data set " << log_path;
-  testing::TempDir dir;
+  test::TempDir dir;
   CarmenImportOptions options;
   options.odometry_noise_seed = 7;
   options.reference_path = dir / "ref.tum";
   const CarmenImportResult result = ImportCarmenLog(log_path, dir / "bag", options);
   EXPECT_TRUE(result.noisy_odometry);
-  const BagContents bag = ReadBack(dir / "bag");
+  const BagContents bag = ReadContents(dir / "bag");
   const std::vector<StampedPose> reference = bag::ReadTumTrajectory(dir / "ref.tum");
   ASSERT_EQ(bag.odometry.size(), reference.size());
   EXPECT_NEAR(bag.odometry[0].pose.pose.position.x, reference[0].position_m.x(), 1e-6);

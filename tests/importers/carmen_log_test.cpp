@@ -94,7 +94,7 @@ TEST(CarmenLog, MalformedLinesNameTheField) {
 }
 
 TEST(CarmenLog, ReadsAWholeLogWithParamsAndCommentsAnywhere) {
-  testing::TempDir dir;
+  test::TempDir dir;
   std::ofstream(dir / "a.log") << "# header\nPARAM robot_frontlaser_offset 0.1 nohost 0\n"
                                   "ODOM 0 0 0 0 0 0 1 h 1\nFLASER 2 1 2 0 0 0 0 0 0 1.5 h 1.5\n"
                                   "NEFF 30\nPARAM robot_frontlaser_offset 0.2\n# more\n\n"
@@ -111,7 +111,7 @@ TEST(CarmenLog, ReadsAWholeLogWithParamsAndCommentsAnywhere) {
 }
 
 TEST(CarmenLog, MalformedLineErrorNamesFileAndLine) {
-  testing::TempDir dir;
+  test::TempDir dir;
   std::ofstream(dir / "bad.log") << "# ok\nFLASER 2 1 2 0 0 0 0 0 0 1.5\nFLASER 2 1 2 0 0 0 0 0\n";
   try {
     ReadCarmenLog(dir / "bad.log");

@@ -57,7 +57,7 @@ struct Frames {
   std::vector<TimestampNs> times;
 };
 
-Frames ReadBack(const std::filesystem::path& bag) {
+Frames ReadFrames(const std::filesystem::path& bag) {
   Frames frames;
   bag::BagReader reader(bag);
   while (auto message = reader.Next()) {
@@ -75,7 +75,7 @@ Frames ReadBack(const std::filesystem::path& bag) {
 }
 
 TEST(TumImport, TinySequenceReadsBackWithDepthInMillimetres) {
-  testing::TempDir temp;
+  test::TempDir temp;
   const auto sequence = temp / "rgbd_dataset_freiburg2_tiny";
   BuildSequence(sequence);
   TumImportOptions options;
@@ -89,7 +89,7 @@ TEST(TumImport, TinySequenceReadsBackWithDepthInMillimetres) {
   EXPECT_EQ(result.warnings.size(), 1u);
   EXPECT_EQ(result.reference_poses, 2u);
 
-  const Frames frames = ReadBack(temp / "bag");
+  const Frames frames = ReadFrames(temp / "bag");
   ASSERT_EQ(frames.infos.size(), 2u);
   ASSERT_EQ(frames.colour.size(), 2u);
   ASSERT_EQ(frames.depth.size(), 2u);
@@ -141,7 +141,7 @@ TEST(TumImport, TinySequenceReadsBackWithDepthInMillimetres) {
 }
 
 TEST(TumImport, CameraMustBeKnown) {
-  testing::TempDir temp;
+  test::TempDir temp;
   BuildSequence(temp / "desk");
   EXPECT_THROW(ImportTumSequence(temp / "desk", temp / "bag"), UsageError);
   EXPECT_FALSE(std::filesystem::exists(temp / "bag"));
@@ -159,7 +159,7 @@ TEST(TumImport, CameraMustBeKnown) {
 }
 
 TEST(TumImport, MissingImageIsBadInputNamingTheFile) {
-  testing::TempDir temp;
+  test::TempDir temp;
   const auto sequence = temp / "rgbd_dataset_freiburg2_tiny";
   BuildSequence(sequence);
   std::filesystem::remove(sequence / "depth" / "2.png");
@@ -173,7 +173,7 @@ TEST(TumImport, MissingImageIsBadInputNamingTheFile) {
 }
 
 TEST(TumImport, MalformedListLineIsBadInputWithLine) {
-  testing::TempDir temp;
+  test::TempDir temp;
   const auto sequence = temp / "rgbd_dataset_freiburg2_tiny";
   BuildSequence(sequence);
   std::ofstream(sequence / "depth.txt") << "# depth\n1311868164.373557\n";

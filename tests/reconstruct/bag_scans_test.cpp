@@ -17,8 +17,8 @@ namespace littermap::reconstruct {
 namespace {
 
 TEST(BagScans, ReadsTheScansAndTheExtrinsic) {
-  testing::TempDir dir;
-  testing::WriteRoomBag(dir / "bag", testing::RoomRun());
+  test::TempDir dir;
+  test::WriteRoomBag(dir / "bag", test::RoomRun());
   std::vector<std::string> events;
   const BagScans read = ReadBagScans(
       dir / "bag", "/scan", [&](const Progress& p) { events.push_back(std::string(p.task)); },
@@ -26,15 +26,15 @@ TEST(BagScans, ReadsTheScansAndTheExtrinsic) {
   ASSERT_EQ(read.scans.size(), 100u);
   EXPECT_EQ(read.scans[1].stamp_ns, 1'100'000'000);
   EXPECT_EQ(read.scans[0].ranges_m.size(), 360u);
-  EXPECT_NEAR(read.T_base_laser.x_m, testing::kBaseLaser.x_m, 1e-9);
-  EXPECT_NEAR(read.T_base_laser.y_m, testing::kBaseLaser.y_m, 1e-9);
-  EXPECT_NEAR(read.T_base_laser.theta_rad, testing::kBaseLaser.theta_rad, 1e-9);
+  EXPECT_NEAR(read.T_base_laser.x_m, test::kBaseLaser.x_m, 1e-9);
+  EXPECT_NEAR(read.T_base_laser.y_m, test::kBaseLaser.y_m, 1e-9);
+  EXPECT_NEAR(read.T_base_laser.theta_rad, test::kBaseLaser.theta_rad, 1e-9);
   EXPECT_EQ(events, std::vector<std::string>{"reading the scans of " + (dir / "bag").string()});
 }
 
 TEST(BagScans, WarnsOfAMissingExtrinsicFirst) {
-  testing::TempDir dir;
-  testing::WriteRoomBag(dir / "bag", testing::RoomRun(), false);
+  test::TempDir dir;
+  test::WriteRoomBag(dir / "bag", test::RoomRun(), false);
   std::vector<std::string> events;
   const BagScans read = ReadBagScans(
       dir / "bag", "/scan", [&](const Progress& p) { events.push_back(std::string(p.task)); },
@@ -49,9 +49,9 @@ TEST(BagScans, WarnsOfAMissingExtrinsicFirst) {
 }
 
 TEST(BagScans, NamesAMissingTopic) {
-  testing::TempDir dir;
-  testing::WriteRoomBag(dir / "bag", testing::RoomRun());
-  testing::ExpectBadInput([&] { ReadBagScans(dir / "bag", "/front_scan"); }, "/front_scan");
+  test::TempDir dir;
+  test::WriteRoomBag(dir / "bag", test::RoomRun());
+  test::ExpectBadInput([&] { ReadBagScans(dir / "bag", "/front_scan"); }, "/front_scan");
 }
 
 }  // namespace

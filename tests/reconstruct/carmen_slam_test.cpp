@@ -22,13 +22,14 @@
 #include "reconstruct/reconstruction.hpp"
 #include "reconstruct/slam_pipeline.hpp"
 #include "reconstruct/trajectory_map_sharpness.hpp"
+#include "support/angles.hpp"
 #include "support/carmen_import.hpp"
 #include "support/temp_dir.hpp"
 
 namespace littermap::reconstruct {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
+using test::kDeg;
 
 PlanarPose Planar(const StampedPose& pose) {
   const Eigen::Vector3d x = pose.orientation * Eigen::Vector3d::UnitX();
@@ -36,8 +37,8 @@ PlanarPose Planar(const StampedPose& pose) {
 }
 
 TEST(CarmenSlam, IcpOnRealIntelScans) {
-  testing::TempDir dir;
-  ASSERT_NO_FATAL_FAILURE(littermap::testing::ImportCarmen("intel", 1, dir.path()));
+  test::TempDir dir;
+  ASSERT_NO_FATAL_FAILURE(littermap::test::ImportCarmen("intel", 1, dir.path()));
   std::vector<std::string> warnings;
   const PlanarPose T_base_laser = ReadLaserExtrinsic(dir / "bag", {}, &warnings);
   const auto scans = ReadScans(dir / "bag", "/scan");
@@ -81,7 +82,7 @@ struct WholeLog {
 };
 
 // The whole log reconstructed with the options, and scored against the corrected reference.
-WholeLog ReconstructWholeLog(const testing::TempDir& dir, const ReconstructionOptions& options) {
+WholeLog ReconstructWholeLog(const test::TempDir& dir, const ReconstructionOptions& options) {
   std::vector<std::string> warnings;
   SlamPipeline pipeline(options.slam, ReadLaserExtrinsic(dir / "bag", options, &warnings));
   ReconstructBag(dir / "bag", options, &pipeline, {});
@@ -98,8 +99,8 @@ WholeLog ReconstructWholeLog(const testing::TempDir& dir, const ReconstructionOp
 }
 
 TEST(CarmenSlam, AcesWholeLogMeetsAccuracyTargets) {
-  testing::TempDir dir;
-  ASSERT_NO_FATAL_FAILURE(littermap::testing::ImportCarmen("aces", 1, dir.path()));
+  test::TempDir dir;
+  ASSERT_NO_FATAL_FAILURE(littermap::test::ImportCarmen("aces", 1, dir.path()));
   const WholeLog log = ReconstructWholeLog(dir, {});
   EXPECT_EQ(log.slam.associated_poses, 440u);
   // Measured on this log with seed 1: ATE 0.069 m, RPE 0.041 m, odometry ATE 10.4 m. The targets
@@ -111,8 +112,8 @@ TEST(CarmenSlam, AcesWholeLogMeetsAccuracyTargets) {
 }
 
 TEST(CarmenSlam, ScanAlignmentBringsTheIntelLabCloserToTheReference) {
-  testing::TempDir dir;
-  ASSERT_NO_FATAL_FAILURE(littermap::testing::ImportCarmen("intel", 1, dir.path()));
+  test::TempDir dir;
+  ASSERT_NO_FATAL_FAILURE(littermap::test::ImportCarmen("intel", 1, dir.path()));
   ReconstructionOptions without;
   without.slam.alignment_mode = AlignmentMode::kOff;
   const WholeLog before = ReconstructWholeLog(dir, without);
@@ -148,7 +149,7 @@ TEST(CarmenSlam, ScanAlignmentBringsTheIntelLabCloserToTheReference) {
 // The raw MIT CSAIL log with the robot's own odometry, graded by the benchmark's verified
 // relations (Kuemmerle et al. 2009), not by another SLAM system's poses.
 TEST(CarmenSlam, CsailRawWholeLogBeatsCartographerOnTheVerifiedRelations) {
-  testing::TempDir dir;
+  test::TempDir dir;
   const auto log = std::filesystem::path(LITTERMAP_DATASETS_DIR) / "carmen-raw" / "csail.clf.gz";
   ASSERT_TRUE(std::filesystem::exists(log)) << "missing data set " << log;
   importers::ImportCarmenLog(log, dir / "bag");

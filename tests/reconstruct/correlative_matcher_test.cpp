@@ -9,14 +9,15 @@
 #include <gtest/gtest.h>
 
 #include "reconstruct/icp_matcher.hpp"
+#include "support/angles.hpp"
 #include "synthetic_world.hpp"
 
 namespace littermap::reconstruct {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
+using test::kDeg;
 
-using testing::RoomPoints;
+using test::RoomPoints;
 
 TEST(CorrelativeMatcher, FindsAPoseFarFromTheGuess) {
   // Target: the room seen from (3, 2, 0), in the world frame. Source: seen from (6.5, 4.2, 0.2).

@@ -12,14 +12,15 @@
 #include <Eigen/LU>
 
 #include "reconstruct/scan_points.hpp"
+#include "support/angles.hpp"
 #include "synthetic_world.hpp"
 
 namespace littermap::reconstruct {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
+using test::kDeg;
 
-using testing::RoomPoints;
+using test::RoomPoints;
 
 class IcpModes : public ::testing::TestWithParam<bool> {};
 

@@ -15,15 +15,14 @@
 namespace littermap::reconstruct {
 namespace {
 
-Points2 PointsFrom(const std::vector<testing::Segment>& walls, const PlanarPose& pose) {
-  return VoxelDownsample(ScanToPoints(testing::ScanFrom(walls, pose), {}, {}).points_base, 0.05);
+Points2 PointsFrom(const std::vector<test::Segment>& walls, const PlanarPose& pose) {
+  return VoxelDownsample(ScanToPoints(test::ScanFrom(walls, pose), {}, {}).points_base, 0.05);
 }
 
 // Key frames 1 m apart (path length), all seeing `walls` from the true poses, stored at the
 // estimated poses (truth shifted by `drift` for the last one).
-KeyFrameMap MapWithRevisit(const std::vector<testing::Segment>& first_walls,
-                           const std::vector<testing::Segment>& last_walls,
-                           const PlanarPose& drift) {
+KeyFrameMap MapWithRevisit(const std::vector<test::Segment>& first_walls,
+                           const std::vector<test::Segment>& last_walls, const PlanarPose& drift) {
   KeyFrameMap map({}, {});
   const std::vector<PlanarPose> truth = {{2, 2, 0},   {3, 2, 0},   {4, 2, 0},    {5, 1.5, 0},
                                          {7, 1.5, 0}, {9, 1.5, 0}, {10, 3, 1.5}, {9, 6, 3.1},
@@ -44,7 +43,7 @@ KeyFrameMap MapWithRevisit(const std::vector<testing::Segment>& first_walls,
 }
 
 TEST(LoopCloser, TrueRevisitIsAcceptedWithTheCorrection) {
-  const auto room = testing::Room();
+  const auto room = test::Room();
   const PlanarPose drift{0.3, -0.2, 0.04};
   const KeyFrameMap map = MapWithRevisit(room, room, drift);
   const LoopCloser closer({});
@@ -63,9 +62,9 @@ TEST(LoopCloser, TrueRevisitIsAcceptedWithTheCorrection) {
 
 TEST(LoopCloser, FalseCandidateIsRejected) {
   // The last key frame sees a different building (a long corridor), at the place of the first.
-  std::vector<testing::Segment> corridor = {
+  std::vector<test::Segment> corridor = {
       {{-20, 1}, {30, 1}}, {{-20, 3.2}, {30, 3.2}}, {{4, 3.2}, {4, 6}}, {{6, 1}, {6, -3}}};
-  const KeyFrameMap map = MapWithRevisit(testing::Room(), corridor, {});
+  const KeyFrameMap map = MapWithRevisit(test::Room(), corridor, {});
   const LoopCloser closer({});
   const LoopAttempt attempt = closer.TryClose(map, map.key_frames().size() - 1);
   EXPECT_NE(attempt.verdict, LoopVerdict::kAccepted);
@@ -84,7 +83,7 @@ std::vector<double> FarAlongTheGraph(const KeyFrameMap& map, double distance_m) 
 TEST(LoopCloser, WideSearchFindsARevisitBeyondIcpReach) {
   // 2.9 m and 8.6 degrees of drift after a long excursion: outside ICP's basin and the guesses
   // of the nearest-candidate search, inside the correlative window for 300 m along the graph.
-  const auto room = testing::Room();
+  const auto room = test::Room();
   const PlanarPose drift{2.5, -1.5, 0.15};
   const KeyFrameMap map = MapWithRevisit(room, room, drift);
   const std::size_t last = map.key_frames().size() - 1;
@@ -105,7 +104,7 @@ TEST(LoopCloser, FarCandidateNeedsMoreEvidence) {
   // matching ratio good enough for a loop close along the graph (small drift, little room for
   // a look-alike), not for one far along it, where a place that only resembles the old one
   // (a facade slid along itself) is likelier: the false loop of freiburg-campus, seed 2.
-  const auto room = testing::Room();
+  const auto room = test::Room();
   auto cluttered = room;
   cluttered.push_back({{3.2, 1.0}, {3.2, 3.4}});
   const KeyFrameMap map = MapWithRevisit(room, cluttered, {0.1, -0.05, 0.01});
@@ -122,7 +121,7 @@ TEST(LoopCloser, FarCandidateNeedsMoreEvidence) {
 TEST(LoopCloser, CorrectionBeyondPlausibleDriftIsRejected) {
   // The right place, but the estimate claims to be 3 m and 0.6 rad off after only 33 m of path,
   // more than tracking drifts: a match there would be a coincidence.
-  const auto room = testing::Room();
+  const auto room = test::Room();
   LoopCloserOptions options;
   options.max_correction_m = 0.1;
   options.max_correction_per_m = 0.001;

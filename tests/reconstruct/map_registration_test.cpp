@@ -19,11 +19,11 @@ namespace littermap::reconstruct {
 namespace {
 
 // Points every 5 cm along the walls, with Gaussian noise.
-Points2 WallPoints(const std::vector<testing::Segment>& walls, double noise_m, std::uint64_t seed) {
+Points2 WallPoints(const std::vector<test::Segment>& walls, double noise_m, std::uint64_t seed) {
   std::mt19937_64 engine(seed);
   std::normal_distribution<double> noise(0, noise_m);
   Points2 points;
-  for (const testing::Segment& wall : walls) {
+  for (const test::Segment& wall : walls) {
     const double length = (wall.b - wall.a).norm();
     for (double s = 0; s <= length; s += 0.05) {
       points.push_back(wall.a + (wall.b - wall.a) * (s / length) +
@@ -36,7 +36,7 @@ Points2 WallPoints(const std::vector<testing::Segment>& walls, double noise_m, s
 // The room as a run's map whose frame sits at T_site_run in the site frame, with noise drawn
 // apart from the site map's (seed 1).
 Points2 RoomMappedFrom(const PlanarPose& T_site_run) {
-  Points2 run = WallPoints(testing::Room(), 0.01, 2);
+  Points2 run = WallPoints(test::Room(), 0.01, 2);
   for (Eigen::Vector2d& p : run) p = Transform(Inverse(T_site_run), p);
   return run;
 }
@@ -47,7 +47,7 @@ Points2 Corridor() {
 }
 
 TEST(MapRegistration, FindsARunMapUnderAKnownOffset) {
-  const Points2 site = WallPoints(testing::Room(), 0.01, 1);
+  const Points2 site = WallPoints(test::Room(), 0.01, 1);
   const PlanarPose T_site_run{1.3, -0.8, 0.14};  // 8 degrees
   const Points2 run = RoomMappedFrom(T_site_run);
   const MapRegistrationResult result = RegisterMap(site, run, {}, {});
@@ -61,7 +61,7 @@ TEST(MapRegistration, FindsARunMapUnderAKnownOffset) {
 TEST(MapRegistration, ARunThatMapsMoreThanTheSiteIsJudgedWhereTheyOverlap) {
   // The site map knows the west part of the room (x < 6 m); the run mapped all of it.
   Points2 site;
-  for (const Eigen::Vector2d& p : WallPoints(testing::Room(), 0.01, 1)) {
+  for (const Eigen::Vector2d& p : WallPoints(test::Room(), 0.01, 1)) {
     if (p.x() < 6) site.push_back(p);
   }
   const PlanarPose T_site_run{0.6, 0.4, 0.05};
@@ -83,7 +83,7 @@ TEST(MapRegistration, IcpThatStopsShortOfConvergenceIsJudgedByTheMatchingRatio) 
   options.icp.max_iterations_per_stage = 2;
   options.icp.convergence_translation_m = 1e-15;
   options.icp.convergence_rotation_rad = 1e-15;
-  const Points2 site = WallPoints(testing::Room(), 0.01, 1);
+  const Points2 site = WallPoints(test::Room(), 0.01, 1);
   const PlanarPose T_site_run{1.3, -0.8, 0.14};
   const Points2 run = RoomMappedFrom(T_site_run);
   const MapRegistrationResult result = RegisterMap(site, run, {}, options);
@@ -99,13 +99,13 @@ TEST(MapRegistration, IcpThatStopsShortOfConvergenceIsJudgedByTheMatchingRatio) 
 
 TEST(MapRegistration, RefusesADifferentPlace) {
   const MapRegistrationResult result =
-      RegisterMap(WallPoints(testing::Room(), 0.01, 1), Corridor(), {}, {});
+      RegisterMap(WallPoints(test::Room(), 0.01, 1), Corridor(), {}, {});
   EXPECT_FALSE(result.registered);
   EXPECT_LT(result.matching_ratio, 0.5);
 }
 
 TEST(OccupancyMapFile, ReadsBackWhatTheGridWrote) {
-  testing::TempDir dir;
+  test::TempDir dir;
   OccupancyGrid grid({});
   const Points2 hits = {{2.0, 1.0}, {2.0, 1.05}, {-1.0, 3.0}};
   grid.InsertScan({0, 0}, hits);
@@ -125,7 +125,7 @@ TEST(OccupancyMapFile, ReadsBackWhatTheGridWrote) {
 }
 
 TEST(OccupancyMapFile, BadFilesNameTheFileAndField) {
-  testing::TempDir dir;
+  test::TempDir dir;
   std::ofstream(dir / "no_resolution.yaml") << "image: map.pgm\norigin: [0, 0, 0]\n";
   try {
     ReadOccupancyMap(dir / "no_resolution.yaml");

@@ -76,7 +76,7 @@ TEST(OccupancyGrid, WritesMapServerPgmAndYaml) {
   options.cell_size_m = 0.1;
   OccupancyGrid grid(options);
   for (int i = 0; i < 5; ++i) grid.InsertScan({0.05, 0.05}, {{1.05, 0.05}, {0.05, 1.05}});
-  testing::TempDir dir;
+  test::TempDir dir;
   grid.WritePgmYaml(dir / "map.pgm", dir / "map.yaml");
   grid.WritePng(dir / "map.png");
   std::ifstream pgm(dir / "map.pgm", std::ios::binary);

@@ -13,7 +13,7 @@
 namespace littermap::reconstruct {
 namespace {
 
-std::filesystem::path Write(const testing::TempDir& dir, const std::string& text) {
+std::filesystem::path Write(const test::TempDir& dir, const std::string& text) {
   const auto path = dir / "options.yaml";
   std::ofstream(path) << text;
   return path;
@@ -30,7 +30,7 @@ std::string ErrorOf(const std::filesystem::path& path) {
 }
 
 TEST(OptionsFile, SetsTheNamedOptions) {
-  testing::TempDir dir;
+  test::TempDir dir;
   ReconstructionOptions options;
   ApplyOptionsFile(Write(dir,
                          "min_matching_ratio: 0.5\n"
@@ -64,7 +64,7 @@ TEST(OptionsFile, SetsTheNamedOptions) {
 }
 
 TEST(OptionsFile, AnEmptyFileKeepsTheDefaults) {
-  testing::TempDir dir;
+  test::TempDir dir;
   ReconstructionOptions options;
   ApplyOptionsFile(Write(dir, ""), &options);
   EXPECT_EQ(options.slam.tracker.min_matching_ratio,
@@ -73,7 +73,7 @@ TEST(OptionsFile, AnEmptyFileKeepsTheDefaults) {
 }
 
 TEST(OptionsFile, BadKeysAndValuesNameTheFileAndKey) {
-  testing::TempDir dir;
+  test::TempDir dir;
   const std::string unknown = ErrorOf(Write(dir, "min_matchng_ratio: 0.5\n"));
   EXPECT_NE(unknown.find("options.yaml: unknown option 'min_matchng_ratio'"), std::string::npos)
       << unknown;
@@ -92,7 +92,7 @@ TEST(OptionsFile, BadKeysAndValuesNameTheFileAndKey) {
 }
 
 TEST(OptionsFile, OutOfRangeValuesFailValidation) {
-  testing::TempDir dir;
+  test::TempDir dir;
   ReconstructionOptions options;
   EXPECT_THROW(ApplyOptionsFile(Write(dir, "rgbd_min_confidence: 2\n"), &options), UsageError);
 }

@@ -2,6 +2,7 @@
 // a loop the others contradict is pruned.
 
 #include "reconstruct/pose_graph.hpp"
+#include "support/planar_errors.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -27,13 +28,7 @@ std::vector<PlanarPose> Square() {
   return poses;
 }
 
-double MaxError(const std::vector<PlanarPose>& a, const std::vector<PlanarPose>& b) {
-  double worst = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    worst = std::max(worst, std::hypot(a[i].x_m - b[i].x_m, a[i].y_m - b[i].y_m));
-  }
-  return worst;
-}
+using test::MaxPositionError;
 
 // Odometry edges with a heading bias of bias_rad per step, plus (optionally) the true loop.
 std::vector<PoseGraphEdge> Edges(const std::vector<PlanarPose>& truth, double bias_rad,
@@ -64,10 +59,10 @@ TEST(PoseGraph, ExactEdgesFromDriftedStartRecoverTheTruth) {
   auto edges = Edges(truth, 0.0, true);
   // Start from poses integrated with a biased heading: 2 degrees per step of drift.
   auto poses = Integrate(Edges(truth, 2 * std::numbers::pi / 180, false), truth.size());
-  ASSERT_GT(MaxError(poses, truth), 1.0);
+  ASSERT_GT(MaxPositionError(poses, truth), 1.0);
   const PoseGraphResult result = OptimizePoseGraph(&poses, edges, {});
   ASSERT_TRUE(result.usable);
-  EXPECT_LT(MaxError(poses, truth), 1e-6);
+  EXPECT_LT(MaxPositionError(poses, truth), 1e-6);
   EXPECT_LT(result.final_cost, 1e-12);
   EXPECT_EQ(poses.front(), truth.front());  // held constant
 }
@@ -78,7 +73,7 @@ TEST(PoseGraph, LoopReducesDriftOfBiasedOdometry) {
   auto open = Integrate(Edges(truth, bias, false), truth.size());
   auto closed = open;
   ASSERT_TRUE(OptimizePoseGraph(&closed, Edges(truth, bias, true), {}).usable);
-  const double before = MaxError(open, truth), after = MaxError(closed, truth);
+  const double before = MaxPositionError(open, truth), after = MaxPositionError(closed, truth);
   EXPECT_GT(before, 0.3);
   EXPECT_LT(after, before / 4) << before << " -> " << after;
 }
@@ -99,7 +94,7 @@ TEST(PoseGraph, PruneLoopsRemovesTheLoopTheOthersContradict) {
 
   auto poses = Integrate(edges, truth.size());
   ASSERT_TRUE(OptimizePoseGraph(&poses, edges, {}).usable);
-  const double before = MaxError(poses, truth);
+  const double before = MaxPositionError(poses, truth);
   const LoopPruning pruning = PruneLoops(&poses, &edges, 16.3, {});
   ASSERT_TRUE(pruning.usable);
   EXPECT_EQ(pruning.removed, 1u);
@@ -111,7 +106,7 @@ TEST(PoseGraph, PruneLoopsRemovesTheLoopTheOthersContradict) {
     EXPECT_LE(EdgeChi2(poses, edge), 16.3);
   }
   EXPECT_EQ(kept, loops - 1);
-  const double after = MaxError(poses, truth);
+  const double after = MaxPositionError(poses, truth);
   EXPECT_LT(after, 0.05);
   EXPECT_LT(after, before / 4) << before << " -> " << after;
 }

@@ -11,7 +11,7 @@
 #include "bag/topics.hpp"
 #include "support/room_run.hpp"
 
-namespace littermap::testing {
+namespace littermap::test {
 
 inline void WriteRoomBag(const std::filesystem::path& bag, const RoomScans& run,
                          bool with_extrinsic = true) {
@@ -35,4 +35,4 @@ inline void WriteRoomBag(const std::filesystem::path& bag, const RoomScans& run,
   writer.Close();
 }
 
-}  // namespace littermap::testing
+}  // namespace littermap::test

@@ -12,14 +12,16 @@
 
 #include "core/error.hpp"
 #include "reconstruct/pose_graph.hpp"
+#include "support/angles.hpp"
+#include "support/planar_errors.hpp"
 #include "synthetic_world.hpp"
 
 namespace littermap::reconstruct {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
+using test::kDeg;
 
-std::vector<KeyFrame> KeyFramesSeenIn(const std::vector<testing::Segment>& walls,
+std::vector<KeyFrame> KeyFramesSeenIn(const std::vector<test::Segment>& walls,
                                       const std::vector<PlanarPose>& truth) {
   std::vector<KeyFrame> frames;
   for (std::size_t i = 0; i < truth.size(); ++i) {
@@ -27,7 +29,7 @@ std::vector<KeyFrame> KeyFramesSeenIn(const std::vector<testing::Segment>& walls
     frame.scan_index = i;
     frame.T_world_base = truth[i];
     frame.points_base =
-        VoxelDownsample(ScanToPoints(testing::ScanFrom(walls, truth[i]), {}, {}).points_base, 0.05);
+        VoxelDownsample(ScanToPoints(test::ScanFrom(walls, truth[i]), {}, {}).points_base, 0.05);
     frame.normals_base = EstimateNormals(frame.points_base, IcpOptions{});
     frames.push_back(std::move(frame));
   }
@@ -45,13 +47,7 @@ std::vector<PoseGraphEdge> Odometry(const std::vector<PlanarPose>& poses, double
   return edges;
 }
 
-double MaxError(const std::vector<PlanarPose>& a, const std::vector<PlanarPose>& b) {
-  double worst = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    worst = std::max(worst, std::hypot(a[i].x_m - b[i].x_m, a[i].y_m - b[i].y_m));
-  }
-  return worst;
-}
+using test::MaxPositionError;
 
 double MaxHeadingError(const std::vector<PlanarPose>& a, const std::vector<PlanarPose>& b) {
   double worst = 0;
@@ -72,7 +68,7 @@ std::vector<PlanarPose> LoopAroundThePillar() {
 }
 
 TEST(ScanAlignment, DriftIsTakenOutAgainstTheScans) {
-  const auto room = testing::Room();
+  const auto room = test::Room();
   const std::vector<PlanarPose> truth = LoopAroundThePillar();
   // Odometry that turns 0.25 degrees too far and drives 1 % too long every step: 0.2 m and 6
   // degrees off by the end of the loop, the poses as it integrates them.
@@ -82,7 +78,7 @@ TEST(ScanAlignment, DriftIsTakenOutAgainstTheScans) {
     step = {step.x_m * 1.01, step.y_m * 1.01, step.theta_rad + 0.25 * kDeg};
     drifted.push_back(Compose(drifted.back(), step));
   }
-  ASSERT_GT(MaxError(drifted, truth), 0.15);
+  ASSERT_GT(MaxPositionError(drifted, truth), 0.15);
   std::vector<PlanarPose> poses = drifted;
   const ScanAlignmentResult result =
       AlignScans(KeyFramesSeenIn(room, truth), Odometry(drifted, 0.05, 1 * kDeg), &poses, {});
@@ -91,13 +87,13 @@ TEST(ScanAlignment, DriftIsTakenOutAgainstTheScans) {
   EXPECT_GT(result.pairs_matched, truth.size());  // the predecessors and the loop's revisits
   EXPECT_LT(result.final_cost, result.initial_cost);
   // Noiseless scans: back on the truth to a few millimetres (the odometry's bias pulls a little).
-  EXPECT_LT(MaxError(poses, truth), 0.01);
+  EXPECT_LT(MaxPositionError(poses, truth), 0.01);
   EXPECT_LT(MaxHeadingError(poses, truth), 0.1 * kDeg);
 }
 
 // Two parallel walls 2 m apart and 200 m long, their ends out of the laser's range: nothing
 // along them to match.
-std::vector<testing::Segment> Corridor() { return {{{-100, 0}, {100, 0}}, {{-100, 2}, {100, 2}}}; }
+std::vector<test::Segment> Corridor() { return {{{-100, 0}, {100, 0}}, {{-100, 2}, {100, 2}}}; }
 
 TEST(ScanAlignment, TheOdometryKeepsWhatACorridorLeavesOpen) {
   std::vector<PlanarPose> truth;
@@ -123,7 +119,7 @@ TEST(ScanAlignment, TheOdometryKeepsWhatACorridorLeavesOpen) {
 
 TEST(ScanAlignment, TheTwoSidesOfAWallAreNotPaired) {
   // A wall 10 cm thick and 8 m long, seen from 1 m on either side.
-  const std::vector<testing::Segment> wall = {
+  const std::vector<test::Segment> wall = {
       {{-4, 0}, {4, 0}}, {{4, 0}, {4, 0.1}}, {{4, 0.1}, {-4, 0.1}}, {{-4, 0.1}, {-4, 0}}};
   const std::vector<PlanarPose> truth = {{0, -1, 0}, {0, 1.1, 0}};
   std::vector<PlanarPose> poses = truth;
@@ -136,7 +132,7 @@ TEST(ScanAlignment, TheTwoSidesOfAWallAreNotPaired) {
 }
 
 TEST(ScanAlignment, ScansBetweenHeldKeyFramesLandOnTheirWalls) {
-  const auto room = testing::Room();
+  const auto room = test::Room();
   const std::vector<PlanarPose> truth = LoopAroundThePillar();
   // Every fourth pose is a key frame, held where it truly is; the scans between are off by up to
   // 4 cm and 0.6 degrees, as a tracker's match against a local map leaves them.
@@ -149,7 +145,7 @@ TEST(ScanAlignment, ScansBetweenHeldKeyFramesLandOnTheirWalls) {
     poses[i].y_m += (i % 3 == 0 ? -0.04 : 0.02);
     poses[i].theta_rad += (i % 2 == 0 ? 0.6 : -0.4) * kDeg;
   }
-  ASSERT_GT(MaxError(poses, truth), 0.04);
+  ASSERT_GT(MaxPositionError(poses, truth), 0.04);
   const std::vector<PlanarPose> given = poses;
   // Held to their neighbours by the (wrong) steps between the given poses, weakly.
   const ScanAlignmentResult result = AlignScansToHeld(
@@ -166,7 +162,7 @@ TEST(ScanAlignment, ScansBetweenHeldKeyFramesLandOnTheirWalls) {
     }
   }
   // Noiseless scans: on the truth to a few millimetres, whatever the steps held them to.
-  EXPECT_LT(MaxError(poses, truth), 0.005);
+  EXPECT_LT(MaxPositionError(poses, truth), 0.005);
   EXPECT_LT(MaxHeadingError(poses, truth), 0.1 * kDeg);
 
   std::vector<bool> short_flags(3, true);
@@ -189,7 +185,7 @@ TEST(ScanAlignment, BadInputIsRefused) {
   EXPECT_THROW(options.Validate(), UsageError);
 
   const std::vector<PlanarPose> truth = {{1, 1, 0}, {1.5, 1, 0}};
-  const auto frames = KeyFramesSeenIn(testing::Room(), truth);
+  const auto frames = KeyFramesSeenIn(test::Room(), truth);
   std::vector<PlanarPose> one = {truth[0]};
   EXPECT_THROW(AlignScans(frames, {}, &one, {}), InternalError);
   std::vector<PlanarPose> poses = truth;

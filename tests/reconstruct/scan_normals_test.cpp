@@ -15,8 +15,8 @@ namespace littermap::reconstruct {
 namespace {
 
 // A 1-degree scan from the origin of the given walls, in beam order.
-Points2 ScanOf(const std::vector<testing::Segment>& walls) {
-  return ScanToPoints(testing::ScanFrom(walls, {}, 360), {}, {}).points_base;
+Points2 ScanOf(const std::vector<test::Segment>& walls) {
+  return ScanToPoints(test::ScanFrom(walls, {}, 360), {}, {}).points_base;
 }
 
 TEST(ScanNormals, AFarWallKeepsItsLineAndFacesTheSensor) {

@@ -2,6 +2,7 @@
 // dropped (the ground arc a bump shows the scanner moves with the robot and would hold ICP).
 
 #include "reconstruct/scan_points.hpp"
+#include "support/angles.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -12,7 +13,7 @@
 namespace littermap::reconstruct {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
+using test::kDeg;
 
 // 360 beams all round, every one with an echo at 5 m.
 LaserScan RingScan() {

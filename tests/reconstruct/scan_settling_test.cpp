@@ -19,11 +19,11 @@
 namespace littermap::reconstruct {
 namespace {
 
-using testing::kBaseLaser;
-using testing::kDeg;
-using testing::Perturbed;
-using testing::RoomRun;
-using testing::RoomScans;
+using test::kBaseLaser;
+using test::kDeg;
+using test::Perturbed;
+using test::RoomRun;
+using test::RoomScans;
 
 double AteM(const std::vector<StampedPose>& estimate, const std::vector<StampedPose>& reference) {
   return eval::EvaluateTrajectory(estimate, reference, {}).ate_rmse_m;

@@ -17,7 +17,7 @@ namespace littermap::reconstruct {
 namespace {
 
 LaserScan RoomScan(const PlanarPose& pose, TimestampNs stamp_ns) {
-  LaserScan scan = testing::ScanFrom(testing::Room(), pose);
+  LaserScan scan = test::ScanFrom(test::Room(), pose);
   scan.stamp_ns = stamp_ns;
   return scan;
 }
@@ -70,7 +70,7 @@ TEST(SlamPipeline, MapDrawsTheWallsInRangeWhereTheyAre) {
   SlamPipeline pipeline(options, {});
   // The first pose is the map's origin: the walls at x = -2.025 and 9.975, mid-cell.
   const PlanarPose pose{2.025, 2.025, 0};
-  LaserScan scan = testing::ScanFrom(testing::Room(), pose, 1440);  // beams < 2 cm apart at 4 m
+  LaserScan scan = test::ScanFrom(test::Room(), pose, 1440);  // beams < 2 cm apart at 4 m
   scan.stamp_ns = 100'000'000;
   pipeline.AddScan(scan, GyroOdometryPose{pose});
   pipeline.Finish();

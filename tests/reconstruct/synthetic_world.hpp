@@ -12,7 +12,7 @@
 #include "core/planar_pose.hpp"
 #include "reconstruct/scan_points.hpp"
 
-namespace littermap::testing {
+namespace littermap::test {
 
 struct Segment {
   Eigen::Vector2d a, b;
@@ -73,4 +73,4 @@ inline reconstruct::Points2 RoomPoints(const PlanarPose& pose) {
       reconstruct::ScanToPoints(ScanFrom(Room(), pose), {}, {}).points_base, 0.05);
 }
 
-}  // namespace littermap::testing
+}  // namespace littermap::test

@@ -21,9 +21,9 @@ namespace {
 // A round column (a 72-gon, radius 1 m): it looks the same from every point of a circle around
 // its centre, so a scan of it alone fixes range and bearing to the centre but not the robot's
 // place on that circle.
-std::vector<testing::Segment> Column() {
+std::vector<test::Segment> Column() {
   const Eigen::Vector2d centre(4, 2.5);
-  std::vector<testing::Segment> walls;
+  std::vector<test::Segment> walls;
   const int sides = 72;
   for (int i = 0; i < sides; ++i) {
     const double a = 2 * std::numbers::pi * i / sides;
@@ -44,7 +44,7 @@ double LargestErrorPassingColumn(const TrackerOptions& options) {
   double largest = 0;
   for (int i = 0; i <= 160; ++i) {
     const PlanarPose truth{0.05 * i, 0, 0};
-    LaserScan scan = testing::ScanFrom(Column(), truth);
+    LaserScan scan = test::ScanFrom(Column(), truth);
     for (float& r : scan.ranges_m) {
       if (r < scan.range_max_m) r = static_cast<float>(r + range_noise(engine));
     }
@@ -103,7 +103,7 @@ TrackStep TrackIntoBlindScan(FixedRgbd* rgbd, const PlanarPose& odometry, bool g
     const PlanarPose pose{0.1 * i, 0, 0};
     tracker.Track(
         static_cast<std::size_t>(i),
-        {static_cast<TimestampNs>(i) * 100'000'000, testing::RoomPoints(pose), pose, {}, gyro});
+        {static_cast<TimestampNs>(i) * 100'000'000, test::RoomPoints(pose), pose, {}, gyro});
   }
   return tracker.Track(2, {200'000'000, {}, odometry, {}, gyro});
 }
@@ -156,7 +156,7 @@ Drive DriveRoom(int scans, OdometryOf odometry_of, bool gyro = false) {
   for (int i = 0; i < scans; ++i) {
     const PlanarPose truth{1.0 + 0.2 * i, 0.5, 0};
     TrackInput input{static_cast<TimestampNs>(i) * 100'000'000,
-                     testing::RoomPoints(truth),
+                     test::RoomPoints(truth),
                      odometry_of(i, truth),
                      {},
                      gyro};
@@ -205,11 +205,11 @@ TrackStep TrackIntoUnturnedOdometry(bool gyro) {
     const PlanarPose pose{1.0 + 0.1 * i, 0.5, 0};
     tracker.Track(
         static_cast<std::size_t>(i),
-        {static_cast<TimestampNs>(i) * 100'000'000, testing::RoomPoints(pose), pose, {}, gyro});
+        {static_cast<TimestampNs>(i) * 100'000'000, test::RoomPoints(pose), pose, {}, gyro});
   }
   const PlanarPose turned{1.3, 0.5, 6 * std::numbers::pi / 180};
-  return tracker.Track(
-      3, {300'000'000, testing::RoomPoints(turned), PlanarPose{1.3, 0.5, 0}, {}, gyro});
+  return tracker.Track(3,
+                       {300'000'000, test::RoomPoints(turned), PlanarPose{1.3, 0.5, 0}, {}, gyro});
 }
 
 TEST(Tracker, AMatchThatDisagreesWithTheGyroIsNotTaken) {
@@ -244,10 +244,10 @@ TrackStep TrackIntoGroundArc(const Tilt& tilt, std::size_t arc_points) {
   for (int i = 0; i < 3; ++i) {
     const PlanarPose pose{1.0 + 0.1 * i, 0.5, 0};
     tracker.Track(static_cast<std::size_t>(i), {static_cast<TimestampNs>(i) * 100'000'000,
-                                                testing::RoomPoints(pose), pose, Tilt{}, true});
+                                                test::RoomPoints(pose), pose, Tilt{}, true});
   }
   const PlanarPose pose{1.3, 0.5, 0};
-  Points2 points = testing::RoomPoints(pose);
+  Points2 points = test::RoomPoints(pose);
   const std::size_t room_points = points.size();
   for (std::size_t k = 0; k < arc_points; ++k) {
     const double a = -0.8 + 1.6 * static_cast<double>(k) / static_cast<double>(arc_points);
@@ -259,7 +259,7 @@ TrackStep TrackIntoGroundArc(const Tilt& tilt, std::size_t arc_points) {
 
 TEST(Tracker, TiltedBeyondLevelOnlyAMatchOverlayingMostOfTheScanIsTheLasers) {
   const double tilt_rad = 10 * std::numbers::pi / 180;
-  const std::size_t half = testing::RoomPoints({1.3, 0.5, 0}).size();
+  const std::size_t half = test::RoomPoints({1.3, 0.5, 0}).size();
   // Level, half the echoes on the map is a match (the thesis's ratio is 0.35) ...
   const TrackStep level = TrackIntoGroundArc(Tilt{}, half);
   EXPECT_EQ(level.routine, Routine::kGlobal);

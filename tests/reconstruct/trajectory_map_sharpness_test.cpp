@@ -20,12 +20,11 @@ namespace littermap::reconstruct {
 namespace {
 
 TEST(TrajectoryMaps, ComparesTrajectoriesOfTheBag) {
-  testing::TempDir dir;
-  const testing::RoomScans run = testing::RoomRun();
-  testing::WriteRoomBag(dir / "bag", run);
+  test::TempDir dir;
+  const test::RoomScans run = test::RoomRun();
+  test::WriteRoomBag(dir / "bag", run);
   bag::WriteTumTrajectory(dir / "truth.tum", run.truth);
-  bag::WriteTumTrajectory(dir / "noisy.tum",
-                          testing::Perturbed(run.truth, 0.02, 0.5 * testing::kDeg));
+  bag::WriteTumTrajectory(dir / "noisy.tum", test::Perturbed(run.truth, 0.02, 0.5 * test::kDeg));
   const std::vector<StampedPose> half(run.truth.begin(), run.truth.begin() + 50);
   bag::WriteTumTrajectory(dir / "half.tum", half);
 
@@ -51,12 +50,12 @@ TEST(TrajectoryMaps, ComparesTrajectoriesOfTheBag) {
 }
 
 TEST(TrajectoryMaps, RefusesWhatCannotBeMeasured) {
-  testing::TempDir dir;
-  testing::WriteRoomBag(dir / "bag", testing::RoomRun());
+  test::TempDir dir;
+  test::WriteRoomBag(dir / "bag", test::RoomRun());
   std::ofstream(dir / "other.tum") << "50.0 0 0 0 0 0 0 1\n51.0 1 0 0 0 0 0 1\n";
   const std::string other = (dir / "other.tum").string();
-  testing::ExpectBadInput([&] { MeasureTrajectoryMaps(dir / "bag", {other}, {}); },
-                          other + ": map sharpness: no scan has a trajectory pose");
+  test::ExpectBadInput([&] { MeasureTrajectoryMaps(dir / "bag", {other}, {}); },
+                       other + ": map sharpness: no scan has a trajectory pose");
   TrajectoryMapsOptions options;
   options.map.cell_size_m = 0;
   EXPECT_THROW(MeasureTrajectoryMaps(dir / "bag", {other}, options), UsageError);

@@ -21,12 +21,11 @@ namespace littermap::reconstruct {
 namespace {
 
 TEST(TrajectorySettling, TruePosesHardlyMoveNoisyOnesSettle) {
-  testing::TempDir dir;
-  const testing::RoomScans run = testing::RoomRun();
-  testing::WriteRoomBag(dir / "bag", run);
+  test::TempDir dir;
+  const test::RoomScans run = test::RoomRun();
+  test::WriteRoomBag(dir / "bag", run);
   bag::WriteTumTrajectory(dir / "truth.tum", run.truth);
-  bag::WriteTumTrajectory(dir / "noisy.tum",
-                          testing::Perturbed(run.truth, 0.05, 1 * testing::kDeg));
+  bag::WriteTumTrajectory(dir / "noisy.tum", test::Perturbed(run.truth, 0.05, 1 * test::kDeg));
 
   TrajectorySettlingOptions options;
   options.output = dir / "settled.tum";
@@ -65,9 +64,9 @@ TEST(TrajectorySettling, TruePosesHardlyMoveNoisyOnesSettle) {
 }
 
 TEST(TrajectorySettling, WarnsOfScansWithoutAPose) {
-  testing::TempDir dir;
-  const testing::RoomScans run = testing::RoomRun();
-  testing::WriteRoomBag(dir / "bag", run);
+  test::TempDir dir;
+  const test::RoomScans run = test::RoomRun();
+  test::WriteRoomBag(dir / "bag", run);
   const std::vector<StampedPose> half(run.truth.begin(), run.truth.begin() + 50);
   bag::WriteTumTrajectory(dir / "half.tum", half);
   std::vector<std::string> warnings;
@@ -81,11 +80,11 @@ TEST(TrajectorySettling, WarnsOfScansWithoutAPose) {
 }
 
 TEST(TrajectorySettling, Refusals) {
-  testing::TempDir dir;
-  testing::WriteRoomBag(dir / "bag", testing::RoomRun());
+  test::TempDir dir;
+  test::WriteRoomBag(dir / "bag", test::RoomRun());
   std::ofstream(dir / "other.tum") << "5.0 0 0 0 0 0 0 1\n6.0 1 0 0 0 0 0 1\n";
-  testing::ExpectBadInput([&] { SettleTrajectory(dir / "bag", dir / "other.tum", {}); },
-                          (dir / "other.tum").string() + ": scan settling:");
+  test::ExpectBadInput([&] { SettleTrajectory(dir / "bag", dir / "other.tum", {}); },
+                       (dir / "other.tum").string() + ": scan settling:");
   TrajectorySettlingOptions options;
   options.output = dir / "missing" / "settled.tum";
   try {

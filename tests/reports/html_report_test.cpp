@@ -11,18 +11,14 @@
 #include "reports/fixture_site.hpp"
 #include "reports/report_files.hpp"
 #include "support/temp_dir.hpp"
+#include "support/test_files.hpp"
 
 namespace littermap::reports {
 namespace {
 
-using testing::TempDir;
+using test::TempDir;
 
-std::string Slurp(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::Slurp;
 
 // Occurrences of a plain substring (std::regex recurses per character: the page's base64 images
 // would overflow the stack).

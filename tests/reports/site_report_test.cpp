@@ -18,7 +18,7 @@
 namespace littermap::reports {
 namespace {
 
-using testing::TempDir;
+using test::TempDir;
 
 TEST(SiteReport, CountsNewStillThereAndGoneItemsPerRun) {
   TempDir dir;

@@ -19,7 +19,7 @@ namespace littermap::reports {
 namespace {
 
 namespace fs = std::filesystem;
-using littermap::testing::TempDir;
+using littermap::test::TempDir;
 
 // A 20 m x 10 m walled map (0.1 m cells) and a run along y = 2 with three cans beside it.
 void WriteRunDirectory(const fs::path& run) {

@@ -13,14 +13,14 @@
 namespace littermap::run {
 namespace {
 
-using testing::ExpectBadInput;
+using test::ExpectBadInput;
 
 void WriteFile(const std::filesystem::path& file, const std::string& text) {
   std::ofstream(file) << text;
 }
 
 TEST(ItemsFile, ReadsColumnsByName) {
-  testing::TempDir dir;
+  test::TempDir dir;
   WriteFile(dir / "items.csv",
             "y,class,extra,id,x,confidence\n1.5,can,?,a,2.5,0.9\n\n# comment\n2,leaf,,b,3,1\n");
   const auto items = ReadItemsCsv(dir / "items.csv");
@@ -47,7 +47,7 @@ TEST(ItemsFile, ReadsColumnsByName) {
 }
 
 TEST(ItemsFile, ErrorsNameFileLineAndColumn) {
-  testing::TempDir dir;
+  test::TempDir dir;
   const std::string items = (dir / "items.csv").string();
   WriteFile(items, "id,class,x\n1,can,0\n");
   ExpectBadInput([&] { ReadItemsCsv(items); }, items + ":1: the header has no column 'y'");
@@ -67,7 +67,7 @@ TEST(ItemsFile, ErrorsNameFileLineAndColumn) {
 }
 
 TEST(ItemsFile, ReadsTheDetectStagesColumns) {
-  testing::TempDir dir;
+  test::TempDir dir;
   WriteFile(dir / "items.csv",
             "id,class,x,y,z,size_m,confidence,views,litter,litter_probability,first_seen_ns,"
             "last_seen_ns\n3,can,1.250,-0.500,0.040,0.110,0.870,5,1,0.930,10,20\n"

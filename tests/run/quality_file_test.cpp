@@ -10,7 +10,7 @@
 namespace littermap::run {
 namespace {
 
-using littermap::testing::TempDir;
+using littermap::test::TempDir;
 
 // A laser run's quality.json as reconstruct wrote it (the Intel lab log): loop closures, the
 // final scan alignment and a warning.

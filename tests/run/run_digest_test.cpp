@@ -10,7 +10,7 @@
 namespace littermap::run {
 namespace {
 
-using littermap::testing::TempDir;
+using littermap::test::TempDir;
 
 TEST(DigestFiles, ChangesWithContentAndOrder) {
   TempDir dir;

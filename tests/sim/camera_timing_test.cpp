@@ -13,7 +13,7 @@ namespace littermap::sim {
 namespace {
 
 TEST(CameraTiming, OffsetAndClippedGaussianJitter) {
-  WorldSpec spec = LoadWorldSpec(testing::SampleWorld());
+  WorldSpec spec = LoadWorldSpec(test::SampleWorld());
   spec.robot.camera.rate_hz = 20;
   spec.robot.camera.clock_offset_ms = 13;
   spec.robot.camera.jitter_sigma_ms = 2;
@@ -40,13 +40,13 @@ TEST(CameraTiming, OffsetAndClippedGaussianJitter) {
 }
 
 TEST(CameraTiming, NoJitterIsPeriodicAndSeedsDiffer) {
-  WorldSpec spec = LoadWorldSpec(testing::SampleWorld());
+  WorldSpec spec = LoadWorldSpec(test::SampleWorld());
   spec.robot.camera.jitter_sigma_ms = 0;
   const Simulation periodic(spec, {2});
   for (std::size_t k = 0; k < periodic.camera_frame_count(); ++k) {
     EXPECT_NEAR(periodic.CameraFrameTime(k), 0.013 + 0.1 * static_cast<double>(k), 1e-12);
   }
-  spec = LoadWorldSpec(testing::SampleWorld());
+  spec = LoadWorldSpec(test::SampleWorld());
   const Simulation a(spec, {2});
   spec.seed += 1;
   const Simulation b(spec, {2});

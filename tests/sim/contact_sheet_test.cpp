@@ -16,7 +16,7 @@ namespace littermap::sim {
 namespace {
 
 TEST(ContactSheet, BagWithoutColourFramesIsBadInput) {
-  testing::TempDir dir;
+  test::TempDir dir;
   {
     bag::BagWriter writer(dir / "bag");
     writer.AddTopic<msg::LaserScan>("/scan");
@@ -35,7 +35,7 @@ TEST(ContactSheet, BagWithoutColourFramesIsBadInput) {
 }
 
 TEST(ContactSheet, RowsOfColourDepthAndLaser) {
-  testing::TempDir dir;
+  test::TempDir dir;
   SimRecordOptions options;
   options.max_duration_s = 0.5;  // 5 frames
   RecordSimulation(LoadWorldSpec(std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" /

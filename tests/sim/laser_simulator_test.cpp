@@ -13,8 +13,8 @@
 namespace littermap::sim {
 namespace {
 
-using testing::EmptyWorld;
-using testing::MakePrimitive;
+using test::EmptyWorld;
+using test::MakePrimitive;
 
 constexpr double kExactM = 1e-4;
 constexpr double kLaserHeightM = 0.3;

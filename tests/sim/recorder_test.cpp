@@ -18,14 +18,12 @@
 #include "bag/topics.hpp"
 #include "core/error.hpp"
 #include "sim/recorder.hpp"
+#include "sim/sim_test_support.hpp"
 #include "sim/world_spec.hpp"
 #include "support/temp_dir.hpp"
 
 namespace littermap::sim {
 namespace {
-
-const std::filesystem::path kWorld =
-    std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "worlds" / "park_small.yaml";
 
 struct Decoded {
   std::vector<TimestampNs> stamps;
@@ -63,14 +61,14 @@ SimRecordResult Record(const std::filesystem::path& dir, std::uint64_t seed, dou
   SimRecordOptions options;
   options.seed = seed;
   options.max_duration_s = duration_s;
-  return RecordSimulation(LoadWorldSpec(kWorld), dir / "bag", dir / "truth", options);
+  return RecordSimulation(LoadWorldSpec(test::SampleWorld()), dir / "bag", dir / "truth", options);
 }
 
 // One 3-second recording of the sample park (seed 7) shared by the tests that only read it.
 class SimRecorderRun : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = new testing::TempDir;
+    dir_ = new test::TempDir;
     result_ = new SimRecordResult(Record(dir_->path(), 7, 3));
     bag_ = new Decoded(ReadBag(*dir_ / "bag"));
   }
@@ -79,11 +77,11 @@ class SimRecorderRun : public ::testing::Test {
     delete result_;
     delete dir_;
   }
-  static testing::TempDir* dir_;
+  static test::TempDir* dir_;
   static SimRecordResult* result_;
   static Decoded* bag_;
 };
-testing::TempDir* SimRecorderRun::dir_ = nullptr;
+test::TempDir* SimRecorderRun::dir_ = nullptr;
 SimRecordResult* SimRecorderRun::result_ = nullptr;
 Decoded* SimRecorderRun::bag_ = nullptr;
 
@@ -158,7 +156,7 @@ TEST_F(SimRecorderRun, RecordsTheRgbdCameraLikeTheTumImporter) {
 }
 
 TEST(SimRecorder, SameSeedSameBagOtherSeedOtherBag) {
-  testing::TempDir dir;
+  test::TempDir dir;
   Record(dir / "a", 3, 1);
   Record(dir / "b", 3, 1);
   Record(dir / "c", 4, 1);
@@ -185,7 +183,7 @@ TEST(SimRecorder, SameSeedSameBagOtherSeedOtherBag) {
 }
 
 TEST(SimRecorder, ExistingBagIsAUsageErrorAndTruthIsNotWritten) {
-  testing::TempDir dir;
+  test::TempDir dir;
   std::filesystem::create_directories(dir / "bag");
   std::ofstream(dir / "bag" / "keep.txt") << "mine";
   EXPECT_THROW(Record(dir.path(), 1, 1), UsageError);

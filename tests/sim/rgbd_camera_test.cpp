@@ -1,6 +1,7 @@
 // Tests of the simulated RGB-D camera against analytic geometry and the Kinect noise model.
 
 #include "sim/rgbd_camera.hpp"
+#include "support/angles.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -12,7 +13,7 @@
 namespace littermap::sim {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
+using test::kDeg;
 
 // Camera at `position` looking along world heading `yaw`, pitched down by `pitch_down` (rad).
 Eigen::Isometry3d CameraPose(const Eigen::Vector3d& position, double yaw, double pitch_down) {

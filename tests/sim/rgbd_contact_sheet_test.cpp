@@ -82,7 +82,7 @@ std::vector<Eigen::Isometry3d> ContactSheetPoses(const World& world) {
 }
 
 TEST(RgbdContactSheetTest, RendersTheSampleParkAsAPersonWouldSeeIt) {
-  const World world = GenerateWorld(LoadWorldSpec(testing::SampleWorld()));
+  const World world = GenerateWorld(LoadWorldSpec(test::SampleWorld()));
   const std::vector<Eigen::Isometry3d> poses = ContactSheetPoses(world);
   ASSERT_EQ(poses.size(), 7u);
   RgbdCamera camera(world, RgbdCameraOptions{});

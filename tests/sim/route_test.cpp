@@ -10,13 +10,14 @@
 #include "sim/route.hpp"
 #include "sim/simulation.hpp"
 #include "sim_test_support.hpp"
+#include "support/angles.hpp"
 
 namespace littermap::sim {
 namespace {
 
-using testing::SampleWorld;
+using test::SampleWorld;
 
-constexpr double kDeg = std::numbers::pi / 180;
+using test::kDeg;
 
 TEST(Route, DriveReachesTheLastWaypointThroughAllOthers) {
   const std::vector<Eigen::Vector2d> route = {{0, 0}, {10, 0}, {10, 5}, {2, 5}};

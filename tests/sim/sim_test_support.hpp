@@ -5,26 +5,23 @@
 
 #include "sim/world.hpp"
 #include "sim/world_spec.hpp"
+#include "support/test_files.hpp"
 
-namespace littermap::sim::testing {
-
-inline std::filesystem::path SampleWorld(const char* name = "park_small.yaml") {
-  return std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "worlds" / name;
-}
+namespace littermap::test {
 
 // A flat, empty world (height 0 everywhere) to put single primitives into.
-inline World EmptyWorld() {
-  World world;
+inline sim::World EmptyWorld() {
+  sim::World world;
   world.spec.size_x_m = 50;
   world.spec.size_y_m = 50;
   world.spec.terrain.root_height_m = 0;
   return world;
 }
 
-inline WorldObject MakePrimitive(Shape shape, const Eigen::Vector3d& center_m,
-                                 const Eigen::Vector3d& size_m, double yaw_rad = 0) {
-  WorldObject object;
-  object.kind = ObjectKind::kRock;
+inline sim::WorldObject MakePrimitive(sim::Shape shape, const Eigen::Vector3d& center_m,
+                                      const Eigen::Vector3d& size_m, double yaw_rad = 0) {
+  sim::WorldObject object;
+  object.kind = sim::ObjectKind::kRock;
   object.shape = shape;
   object.center_m = center_m;
   object.size_m = size_m;
@@ -32,4 +29,4 @@ inline WorldObject MakePrimitive(Shape shape, const Eigen::Vector3d& center_m,
   return object;
 }
 
-}  // namespace littermap::sim::testing
+}  // namespace littermap::test

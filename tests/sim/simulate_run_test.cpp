@@ -8,30 +8,29 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/error.hpp"
+#include "sim/sim_test_support.hpp"
 #include "sim/truth_map.hpp"
 #include "support/temp_dir.hpp"
 
 namespace littermap::sim {
 namespace {
 
-const std::filesystem::path kWorld =
-    std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "worlds" / "park_small.yaml";
-
 TEST(SimulateRun, WritesAndReportsTheBagTheTruthAndTheContactSheetInTurn) {
-  testing::TempDir dir;
+  test::TempDir dir;
   SimulateRunOptions options;
   options.record.seed = 3;
   options.duration_s = 2.0;
   options.truth_dir = dir / "truth";
   options.contact_sheet_png = dir / "sheet.png";
   std::vector<std::string> lines;
-  const SimulateRunResult result = SimulateRun(
-      LoadWorldSpec(kWorld), dir / "bag", options, {}, [&lines, &dir](const std::string& line) {
-        lines.push_back(line);
-        // Each output is complete when it is reported.
-        const char* written[] = {"bag", "truth/map.pgm", "sheet.png"};
-        EXPECT_TRUE(std::filesystem::exists(dir / written[lines.size() - 1])) << line;
-      });
+  const SimulateRunResult result =
+      SimulateRun(LoadWorldSpec(test::SampleWorld()), dir / "bag", options, {},
+                  [&lines, &dir](const std::string& line) {
+                    lines.push_back(line);
+                    // Each output is complete when it is reported.
+                    const char* written[] = {"bag", "truth/map.pgm", "sheet.png"};
+                    EXPECT_TRUE(std::filesystem::exists(dir / written[lines.size() - 1])) << line;
+                  });
   EXPECT_EQ(result.record.scans, 21u);  // 10 Hz over 0..2 s
   EXPECT_FALSE(result.record.route_completed);
   ASSERT_TRUE(result.contact_sheet);
@@ -56,32 +55,32 @@ TEST(SimulateRun, WritesAndReportsTheBagTheTruthAndTheContactSheetInTurn) {
 }
 
 TEST(SimulateRun, NamesTheRouteDrivenAndWritesOnlyWhatIsAsked) {
-  testing::TempDir dir;
+  test::TempDir dir;
   SimulateRunOptions options;
   options.record.route = "route";
   options.duration_s = 0.5;
   std::vector<std::string> lines;
-  SimulateRun(LoadWorldSpec(kWorld), dir / "bag", options, {},
+  SimulateRun(LoadWorldSpec(test::SampleWorld()), dir / "bag", options, {},
               [&lines](const std::string& line) { lines.push_back(line); });
   ASSERT_EQ(lines.size(), 1u);
   EXPECT_NE(lines[0].find(", route route, "), std::string::npos) << lines[0];
 }
 
 TEST(SimulateRun, ADurationThatIsNotPositiveIsAUsageErrorAndWritesNothing) {
-  testing::TempDir dir;
+  test::TempDir dir;
   SimulateRunOptions options;
   options.truth_dir = dir / "truth";
   for (const double duration_s : {0.0, -1.0, std::nan("")}) {
     options.duration_s = duration_s;
-    EXPECT_THROW(SimulateRun(LoadWorldSpec(kWorld), dir / "bag", options), UsageError);
+    EXPECT_THROW(SimulateRun(LoadWorldSpec(test::SampleWorld()), dir / "bag", options), UsageError);
   }
   EXPECT_FALSE(std::filesystem::exists(dir / "bag"));
   EXPECT_FALSE(std::filesystem::exists(dir / "truth"));
 }
 
 TEST(TruthMap, DrawsTheScansAtTheTruePoses) {
-  testing::TempDir dir;
-  const Simulation simulation(LoadWorldSpec(kWorld), {2.0});
+  test::TempDir dir;
+  const Simulation simulation(LoadWorldSpec(test::SampleWorld()), {2.0});
   WriteTruthMap(simulation, dir.path());
   const cv::Mat map = cv::imread((dir / "map.pgm").string(), cv::IMREAD_UNCHANGED);
   ASSERT_FALSE(map.empty());

@@ -21,14 +21,12 @@
 #include "bag/topics.hpp"
 #include "bag/tum_trajectory.hpp"
 #include "sim/recorder.hpp"
+#include "sim/sim_test_support.hpp"
 #include "sim/world_spec.hpp"
 #include "support/temp_dir.hpp"
 
 namespace littermap::sim {
 namespace {
-
-const std::filesystem::path kWorld =
-    std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "worlds" / "park_small.yaml";
 
 std::vector<std::vector<std::string>> ReadCsv(const std::filesystem::path& path) {
   std::ifstream in(path);
@@ -94,8 +92,8 @@ double DistanceToValue(const cv::Mat& mask, double u, double v, std::uint16_t va
 }
 
 TEST(SimTruthProjection, VisibleLitterProjectsOntoItsMaskPixels) {
-  testing::TempDir dir;
-  WorldSpec spec = LoadWorldSpec(kWorld);
+  test::TempDir dir;
+  WorldSpec spec = LoadWorldSpec(test::SampleWorld());
   spec.truth.mask_every_n_frames = 1;
   SimRecordOptions options;
   options.max_duration_s = 2;  // park_small, seed 7: a plastic bag and a food container in view

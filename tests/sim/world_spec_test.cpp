@@ -9,7 +9,7 @@
 namespace littermap::sim {
 namespace {
 
-using testing::SampleWorld;
+using test::SampleWorld;
 
 constexpr const char* kRoute = "route: {waypoints_m: [[0, 0], [5, 0]]}\n";
 

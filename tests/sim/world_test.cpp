@@ -14,7 +14,7 @@
 namespace littermap::sim {
 namespace {
 
-using testing::SampleWorld;
+using test::SampleWorld;
 
 bool SameObjects(const World& a, const World& b) {
   if (a.objects.size() != b.objects.size()) return false;

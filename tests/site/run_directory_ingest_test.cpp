@@ -14,7 +14,7 @@
 namespace littermap::site {
 namespace {
 
-using littermap::testing::TempDir;
+using littermap::test::TempDir;
 
 // A run along y = 2 from x = 0 to x = 20 (10 Hz at 0.5 m/s), with `items` cans beside the path.
 void WriteRun(const std::filesystem::path& dir, int items, const char* items_file = "items.csv") {

@@ -14,7 +14,7 @@
 namespace littermap::site {
 namespace {
 
-using littermap::testing::TempDir;
+using littermap::test::TempDir;
 
 // A run driving east along y = 10 from x = 0 to x = 30 (10 cm steps).
 RunInput EastRun(const std::string& digest, double start_time_s) {

@@ -11,7 +11,7 @@
 namespace littermap::site {
 namespace {
 
-using littermap::testing::TempDir;
+using littermap::test::TempDir;
 
 TEST(RunItems, ReadsDetectStageAndTruthFiles) {
   TempDir dir;

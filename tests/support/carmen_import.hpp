@@ -11,7 +11,7 @@
 #include "core/error.hpp"
 #include "importers/carmen_importer.hpp"
 
-namespace littermap::testing {
+namespace littermap::test {
 
 // NAME: the log's name, e.g. "intel" for intel-corrected.log.gz. A missing data set or a
 // failing import is a fatal failure (call it inside ASSERT_NO_FATAL_FAILURE).
@@ -30,4 +30,4 @@ inline void ImportCarmen(const std::string& name, int odometry_noise_seed,
   }
 }
 
-}  // namespace littermap::testing
+}  // namespace littermap::test

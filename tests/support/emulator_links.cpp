@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-namespace littermap::testing {
+namespace littermap::test {
 namespace {
 
 void Check(bool ok, const std::string& emulator, const char* what) {
@@ -56,4 +56,4 @@ PseudoTerminal OpenPseudoTerminal(const std::string& emulator) {
   return out;
 }
 
-}  // namespace littermap::testing
+}  // namespace littermap::test

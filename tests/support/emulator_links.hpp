@@ -5,7 +5,7 @@
 
 #include <string>
 
-namespace littermap::testing {
+namespace littermap::test {
 
 struct LoopbackListener {
   int fd = -1;  // listening socket
@@ -20,4 +20,4 @@ struct PseudoTerminal {
 };
 PseudoTerminal OpenPseudoTerminal(const std::string& emulator);
 
-}  // namespace littermap::testing
+}  // namespace littermap::test

@@ -8,7 +8,7 @@
 
 #include "core/error.hpp"
 
-namespace littermap::testing {
+namespace littermap::test {
 
 inline void ExpectBadInput(const std::function<void()>& read, const std::string& expected) {
   try {
@@ -19,4 +19,4 @@ inline void ExpectBadInput(const std::function<void()>& read, const std::string&
   }
 }
 
-}  // namespace littermap::testing
+}  // namespace littermap::test

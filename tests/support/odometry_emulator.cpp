@@ -15,7 +15,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-namespace littermap::testing {
+namespace littermap::test {
 namespace {
 
 // Writes all of `text` to a non-blocking fd; false when the link is gone or the reader has not
@@ -114,4 +114,4 @@ void OdometryEmulator::Stream(int fd) {
   }
 }
 
-}  // namespace littermap::testing
+}  // namespace littermap::test

@@ -11,7 +11,7 @@
 
 #include "capture/odometry_protocol.hpp"
 
-namespace littermap::testing {
+namespace littermap::test {
 
 struct OdometryEmulatorOptions {
   double rate_hz = 50;
@@ -53,4 +53,4 @@ class OdometryEmulator {
   std::thread thread_;
 };
 
-}  // namespace littermap::testing
+}  // namespace littermap::test

@@ -12,14 +12,14 @@
 #include "core/laser_scan.hpp"
 #include "core/planar_pose.hpp"
 #include "eval/trajectory_metrics.hpp"
+#include "support/angles.hpp"
 
-namespace littermap::testing {
+namespace littermap::test {
 
 // A square room [2 cm, 10.02 m]^2: its walls run through the middle of 5 cm cells, not along
 // cell borders (where rounding would split a wall over two rows).
 constexpr double kWallM = 0.02;
 constexpr double kRoomM = 10;
-constexpr double kDeg = std::numbers::pi / 180;
 
 // Range from (x, y) along world angle a to the room's walls.
 inline double RangeToWalls(double x, double y, double a) {
@@ -84,4 +84,4 @@ inline std::vector<StampedPose> Perturbed(const std::vector<StampedPose>& poses,
   return perturbed;
 }
 
-}  // namespace littermap::testing
+}  // namespace littermap::test

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <string>
 
-namespace littermap::testing {
+namespace littermap::test {
 
 struct CommandResult {
   int exit_code = -1;
@@ -33,4 +33,4 @@ inline CommandResult RunLittermap(const std::string& arguments) {
   return result;
 }
 
-}  // namespace littermap::testing
+}  // namespace littermap::test

@@ -19,7 +19,7 @@
 #include "capture/scip_protocol.hpp"
 #include "support/emulator_links.hpp"
 
-namespace littermap::testing {
+namespace littermap::test {
 
 namespace {
 
@@ -249,4 +249,4 @@ void ScipEmulator::QueueFrame() {
   out_ += "\n";
 }
 
-}  // namespace littermap::testing
+}  // namespace littermap::test

@@ -13,7 +13,7 @@
 #include <thread>
 #include <vector>
 
-namespace littermap::testing {
+namespace littermap::test {
 
 struct ScipEmulatorOptions {
   std::string scip2_status_line = "00P";  // the status line answering SCIP2.0, sent verbatim
@@ -87,4 +87,4 @@ class ScipEmulator {
   std::thread thread_;
 };
 
-}  // namespace littermap::testing
+}  // namespace littermap::test

@@ -11,7 +11,7 @@
 #include "sim/simulation.hpp"
 #include "sim/world_spec.hpp"
 
-namespace littermap::testing {
+namespace littermap::test {
 
 std::size_t WriteSimTumSequence(const std::filesystem::path& world_yaml,
                                 const std::filesystem::path& directory,
@@ -56,4 +56,4 @@ std::size_t WriteSimTumSequence(const std::filesystem::path& world_yaml,
   return frames;
 }
 
-}  // namespace littermap::testing
+}  // namespace littermap::test

@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <filesystem>
 
-namespace littermap::testing {
+namespace littermap::test {
 
 struct SimTumSequenceOptions {
   double duration_s = 20;
@@ -19,4 +19,4 @@ std::size_t WriteSimTumSequence(const std::filesystem::path& world_yaml,
                                 const std::filesystem::path& directory,
                                 const SimTumSequenceOptions& options = {});
 
-}  // namespace littermap::testing
+}  // namespace littermap::test

@@ -10,7 +10,7 @@
 
 #include "support/run_command.hpp"
 
-namespace littermap::testing {
+namespace littermap::test {
 
 // Simulates the world file text into DIR/bag and DIR/truth, then reconstructs DIR/run with the
 // defaults and DIR/plain with the reconstruct options given as YAML text. Call it inside
@@ -30,4 +30,4 @@ inline void SimulateAndReconstructTwice(const std::filesystem::path& dir,
   ASSERT_EQ(result.exit_code, 0) << result.output;
 }
 
-}  // namespace littermap::testing
+}  // namespace littermap::test

@@ -7,7 +7,7 @@
 #include <random>
 #include <string>
 
-namespace littermap::testing {
+namespace littermap::test {
 
 class TempDir {
  public:
@@ -31,4 +31,4 @@ class TempDir {
   std::filesystem::path path_;
 };
 
-}  // namespace littermap::testing
+}  // namespace littermap::test

@@ -9,7 +9,7 @@
 
 #include "support/run_command.hpp"
 
-namespace littermap::testing {
+namespace littermap::test {
 
 inline double Ate(const std::filesystem::path& estimate, const std::filesystem::path& reference) {
   const CommandResult eval =
@@ -18,4 +18,4 @@ inline double Ate(const std::filesystem::path& estimate, const std::filesystem::
   return nlohmann::json::parse(eval.output).at("ate_rmse_m").get<double>();
 }
 
-}  // namespace littermap::testing
+}  // namespace littermap::test
