@@ -2,8 +2,8 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/output_file.hpp"
 
 namespace littermap::bag {
 namespace {

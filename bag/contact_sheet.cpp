@@ -1,6 +1,5 @@
 #include "bag/contact_sheet.hpp"
 
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -9,7 +8,6 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "bag/image_codec.hpp"
@@ -133,9 +131,7 @@ ContactSheetResult WriteContactSheet(const std::filesystem::path& bag,
   }
   cv::Mat sheet;
   cv::vconcat(lines, sheet);
-  if (!cv::imwrite(png.string(), sheet)) {
-    throw FileFailure(png, "cannot write the contact sheet", errno);
-  }
+  WriteImageFile(png, sheet);
   return {static_cast<int>(rows.size()), sheet.cols, sheet.rows};
 }
 

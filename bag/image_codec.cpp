@@ -4,8 +4,11 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "bag/jpeg_decoder.hpp"
 #include "bag/png16.hpp"
+#include "bag/png_decoder.hpp"
 #include "core/error.hpp"
+#include "core/output_file.hpp"
 
 namespace littermap::bag {
 namespace {
@@ -23,8 +26,20 @@ std::vector<std::uint8_t> EncodeOrThrow(const char* extension, const cv::Mat& im
   return bytes;
 }
 
+// PNG and JPEG go through bag/png_decoder and bag/jpeg_decoder (the libraries' messages caught,
+// not printed); other formats through OpenCV.
 cv::Mat DecodeOrThrow(std::span<const std::uint8_t> bytes, int flags, const std::string& format) {
   if (bytes.empty()) throw BadInputError("image (" + format + ") has no data");
+  const bool colour = flags == cv::IMREAD_COLOR;
+  try {
+    if (IsPng(bytes)) return colour ? DecodePngColor(bytes) : DecodePng16(bytes);
+    if (IsJpeg(bytes)) {
+      if (!colour) throw BadInputError("a JPEG is not a 16-bit single-channel image");
+      return DecodeJpeg(bytes).bgr;
+    }
+  } catch (const BadInputError& error) {
+    throw BadInputError("image (" + format + "): " + error.what());
+  }
   const cv::Mat buffer(1, static_cast<int>(bytes.size()), CV_8UC1,
                        const_cast<std::uint8_t*>(bytes.data()));
   cv::Mat image = cv::imdecode(buffer, flags);
@@ -33,6 +48,13 @@ cv::Mat DecodeOrThrow(std::span<const std::uint8_t> bytes, int flags, const std:
 }
 
 }  // namespace
+
+void WriteImageFile(const std::filesystem::path& file, const cv::Mat& image,
+                    const std::vector<int>& parameters) {
+  const std::vector<std::uint8_t> bytes =
+      EncodeOrThrow(file.extension().string().c_str(), image, parameters);
+  WriteFileAtomically(file, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
+}
 
 msg::CompressedImage EncodeColorJpeg(const cv::Mat& colour_bgr, const msg::Header& header,
                                      const ImageCodecOptions& options) {

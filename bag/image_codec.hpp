@@ -5,6 +5,7 @@
 // also accepts PNG colour and compressed_depth_image_transport's "compressedDepth" payloads.
 
 #include <cstdint>
+#include <filesystem>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -30,5 +31,10 @@ cv::Mat DecodeColor(const msg::CompressedImage& image);
 // Returns CV_16UC1 depth in millimetres. Throws BadInputError if the payload does not decode or
 // is not 16-bit single-channel.
 cv::Mat DecodeDepthMm(const msg::CompressedImage& image);
+
+// Writes an image file in the format of its extension (.png, .jpg, .pgm), all or nothing (through
+// FILE.tmp, see core/output_file.hpp). Throws the FileFailure naming the file.
+void WriteImageFile(const std::filesystem::path& file, const cv::Mat& image,
+                    const std::vector<int>& parameters = {});
 
 }  // namespace littermap::bag

@@ -24,23 +24,29 @@ bool DecodeAny(const BagReader& reader, const BagMessage& raw, AnyMessage& out) 
 
 // Both kinds of message carry their topic, index and time under the same names.
 template <typename Message>
-[[noreturn]] void ThrowUndecodableMessage(const BagReader& reader, const Message& message,
-                                          const std::string& reason) {
-  throw BadInputError(reader.directory().string() + ": topic '" + message.topic->name +
-                      "' message #" + std::to_string(message.index) +
-                      " (t=" + std::to_string(message.timestamp_ns) + " ns): " + reason);
+std::string OriginOf(const BagReader& reader, const Message& message) {
+  return reader.directory().string() + ": topic '" + message.topic->name + "' message #" +
+         std::to_string(message.index) + " (t=" + std::to_string(message.timestamp_ns) + " ns)";
 }
 
 }  // namespace
 
+std::string MessageOrigin(const BagReader& reader, const BagMessage& message) {
+  return OriginOf(reader, message);
+}
+
+std::string MessageOrigin(const BagReader& reader, const DecodedMessage& message) {
+  return OriginOf(reader, message);
+}
+
 void ThrowUndecodable(const BagReader& reader, const BagMessage& message,
                       const std::string& reason) {
-  ThrowUndecodableMessage(reader, message, reason);
+  throw BadInputError(MessageOrigin(reader, message) + ": " + reason);
 }
 
 void ThrowUndecodable(const BagReader& reader, const DecodedMessage& message,
                       const std::string& reason) {
-  ThrowUndecodableMessage(reader, message, reason);
+  throw BadInputError(MessageOrigin(reader, message) + ": " + reason);
 }
 
 std::optional<DecodedMessage> MessageStream::Next() {

@@ -47,6 +47,9 @@ class MessageStream {
   std::vector<std::string> warned_topics_;
 };
 
+// "BAG: topic 'T' message #N (t=… ns)": where a message is, for the errors it causes later.
+std::string MessageOrigin(const BagReader& reader, const BagMessage& message);
+std::string MessageOrigin(const BagReader& reader, const DecodedMessage& message);
 // A BadInputError "BAG: topic 'T' message #N (t=… ns): REASON" for a message that cannot be used.
 [[noreturn]] void ThrowUndecodable(const BagReader& reader, const BagMessage& message,
                                    const std::string& reason);

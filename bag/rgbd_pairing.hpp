@@ -4,6 +4,9 @@
 // (compressed or raw, bag/camera_image.hpp), so a reader decodes only the frames it uses.
 
 #include <optional>
+#include <string>
+
+#include <opencv2/core.hpp>
 
 #include "bag/camera_image.hpp"
 #include "core/time.hpp"
@@ -13,7 +16,14 @@ namespace littermap::bag {
 struct CompressedRgbd {
   TimestampNs stamp_ns = 0;  // the colour image's
   CameraImage colour, depth;
+  // Where each image came from, for errors: "BAG: topic 'T' message #N (t=… ns)" (MessageOrigin).
+  std::string colour_origin, depth_origin;
 };
+
+// The frame's images decoded (CV_8UC3 BGR; CV_16UC1 millimetres); an image that does not decode
+// is a BadInputError naming its origin.
+cv::Mat DecodeColor(const CompressedRgbd& frame);
+cv::Mat DecodeDepthMm(const CompressedRgbd& frame);
 
 class RgbdPairing {
  public:
@@ -21,8 +31,8 @@ class RgbdPairing {
 
   // The frame an image completes, if any; an image with no partner within the gap waits for
   // one (a newer image of its kind replaces it).
-  std::optional<CompressedRgbd> AddColour(CameraImage image);
-  std::optional<CompressedRgbd> AddDepth(CameraImage image);
+  std::optional<CompressedRgbd> AddColour(CameraImage image, std::string origin = {});
+  std::optional<CompressedRgbd> AddDepth(CameraImage image, std::string origin = {});
   // Forgets the waiting images (a skipped colour image must not pair with its depth).
   void Reset();
 
@@ -31,6 +41,7 @@ class RgbdPairing {
 
   TimestampNs max_gap_ns_;
   std::optional<CameraImage> colour_, depth_;
+  std::string colour_origin_, depth_origin_;
 };
 
 }  // namespace littermap::bag

@@ -1,15 +1,13 @@
 #include "bag/tum_trajectory.hpp"
 
 #include <array>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <memory>
 
 #include "core/error.hpp"
-#include "core/failure.hpp"
+#include "core/output_file.hpp"
 #include "core/text_lines.hpp"
 
 namespace littermap::bag {
@@ -37,10 +35,6 @@ std::vector<std::string_view> SplitFields(std::string_view line) {
   }
   return fields;
 }
-
-struct FileCloser {
-  void operator()(std::FILE* file) const { std::fclose(file); }
-};
 
 }  // namespace
 
@@ -136,19 +130,18 @@ std::vector<StampedPose> ReadTumTrajectory(const std::filesystem::path& path) {
 }
 
 void WriteTumTrajectory(const std::filesystem::path& path, std::span<const StampedPose> poses) {
-  std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "w"));
-  if (!file) throw UsageError("cannot create trajectory file " + path.string());
-  bool ok = std::fputs("# timestamp tx ty tz qx qy qz qw\n", file.get()) >= 0;
+  OutputFile file(path);
+  file.stream() << "# timestamp tx ty tz qx qy qz qw\n";
+  char line[256];
   for (const StampedPose& pose : poses) {
     // "+ 0.0" turns -0 into 0, so that files do not show "-0.000000".
     const Eigen::Vector4d q = pose.orientation.coeffs() + Eigen::Vector4d::Zero();
-    ok = ok && std::fprintf(file.get(), "%s %.6f %.6f %.6f %.9f %.9f %.9f %.9f\n",
-                            FormatTumStamp(pose.stamp_ns).c_str(), pose.position_m.x() + 0.0,
-                            pose.position_m.y() + 0.0, pose.position_m.z() + 0.0, q.x(), q.y(),
-                            q.z(), q.w()) > 0;
+    std::snprintf(line, sizeof line, "%s %.6f %.6f %.6f %.9f %.9f %.9f %.9f\n",
+                  FormatTumStamp(pose.stamp_ns).c_str(), pose.position_m.x() + 0.0,
+                  pose.position_m.y() + 0.0, pose.position_m.z() + 0.0, q.x(), q.y(), q.z(), q.w());
+    file.stream() << line;
   }
-  ok = std::fclose(file.release()) == 0 && ok;
-  if (!ok) throw FileFailure(path, "cannot write", errno);
+  file.Commit();
 }
 
 }  // namespace littermap::bag

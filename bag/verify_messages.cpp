@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "bag/camera_image.hpp"
+#include "bag/jpeg_decoder.hpp"
 #include "bag/message_stream.hpp"
 #include "core/error.hpp"
 
@@ -41,7 +42,16 @@ void VerifyImage(const BagReader& reader, const DecodedMessage& message, const C
                  const std::map<std::string, std::pair<int, int>>& camera_sizes) {
   cv::Mat pixels;
   try {
-    pixels = IsDepth(image) ? DecodeDepthMm(image) : DecodeColor(image);
+    const auto* compressed = std::get_if<msg::CompressedImage>(&image);
+    if (compressed != nullptr && !IsDepth(image) && IsJpeg(compressed->data)) {
+      // A damaged JPEG may still decode (to wrong pixels): verification says so.
+      JpegImage jpeg = DecodeJpeg(compressed->data);
+      if (!jpeg.damage.empty())
+        ThrowUndecodable(reader, message, "JPEG is damaged: " + jpeg.damage);
+      pixels = std::move(jpeg.bgr);
+    } else {
+      pixels = IsDepth(image) ? DecodeDepthMm(image) : DecodeColor(image);
+    }
   } catch (const BadInputError& e) {
     ThrowUndecodable(reader, message, e.what());
   }

@@ -4,6 +4,7 @@ find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs ml features2d c
 find_package(SQLite3 REQUIRED)
 find_package(ZLIB REQUIRED)
 find_package(PNG REQUIRED)
+find_package(JPEG REQUIRED)
 find_package(yaml-cpp REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(CLI11 REQUIRED)

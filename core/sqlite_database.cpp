@@ -1,7 +1,9 @@
 #include "core/sqlite_database.hpp"
 
 #include <sqlite3.h>
+#include <unistd.h>
 
+#include <cctype>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -137,11 +139,49 @@ void SqliteStatement::Fail(int code, const char* action) const {
       code);
 }
 
+namespace {
+
+// A file: URI for the path, every byte outside RFC 3986's unreserved set and '/' escaped.
+std::string FileUri(const std::filesystem::path& file) {
+  static constexpr char kHex[] = "0123456789ABCDEF";
+  std::string uri = "file:";
+  for (const char c : std::filesystem::absolute(file).string()) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (std::isalnum(byte) || std::strchr("-._~/", c) != nullptr) {
+      uri += c;
+    } else {
+      uri += '%';
+      uri += kHex[byte >> 4];
+      uri += kHex[byte & 15];
+    }
+  }
+  return uri;
+}
+
+// A database that can only be read as immutable: its folder cannot take a -shm file, and no
+// -wal file holds changes that reading without it would miss.
+bool ReadableOnlyAsImmutable(const std::filesystem::path& file) {
+  const std::filesystem::path folder =
+      file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+  std::error_code error;
+  const std::filesystem::path wal = file.string() + "-wal";
+  const bool pending_wal =
+      std::filesystem::exists(wal, error) && std::filesystem::file_size(wal, error) > 0;
+  return access(folder.c_str(), W_OK) != 0 && !pending_wal;
+}
+
+}  // namespace
+
 SqliteDatabase::SqliteDatabase(const std::filesystem::path& file, Mode mode) : file_(file) {
   int flags = SQLITE_OPEN_NOMUTEX;
+  std::string name = file.string();
   switch (mode) {
     case Mode::kReadOnly:
       flags |= SQLITE_OPEN_READONLY;
+      if (ReadableOnlyAsImmutable(file)) {
+        flags |= SQLITE_OPEN_URI;
+        name = FileUri(file) + "?immutable=1";
+      }
       break;
     case Mode::kReadWrite:
       flags |= SQLITE_OPEN_READWRITE;
@@ -150,7 +190,7 @@ SqliteDatabase::SqliteDatabase(const std::filesystem::path& file, Mode mode) : f
       flags |= SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
       break;
   }
-  const int code = sqlite3_open_v2(file.c_str(), &db_, flags, nullptr);
+  const int code = sqlite3_open_v2(name.c_str(), &db_, flags, nullptr);
   if (code != SQLITE_OK) {
     const std::string message = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(code);
     // Why the file could not be opened (no such folder: the path; no permission: the machine).

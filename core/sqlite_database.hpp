@@ -71,6 +71,10 @@ class SqliteStatement {
 
 class SqliteDatabase {
  public:
+  // kReadOnly reads a database in a folder one may not write (a share, a read-only file system)
+  // too: SQLite needs to create a WAL database's -shm file next to it, so when the folder is not
+  // writable and no -wal file holds changes not yet in the database, the file is opened as
+  // immutable (read without locks: nothing can be writing it there either).
   enum class Mode { kReadOnly, kReadWrite, kCreate };
   SqliteDatabase(const std::filesystem::path& file, Mode mode);
   ~SqliteDatabase();

@@ -111,6 +111,8 @@ void CheckIsGeoPackage(SqliteDatabase& database) {
   try {
     application_id = PragmaValue(database, "application_id");
   } catch (const SqliteError& e) {
+    // A file one may not write (read-only, its folder too) is the environment, not the file.
+    if (e.kind() == ErrorKind::kEnvironment) throw;
     throw BadInputError(file + ": not a GeoPackage: not an SQLite database (" + e.what() + ")");
   }
   if (application_id != kGeoPackageApplicationId) {

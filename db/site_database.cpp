@@ -86,15 +86,22 @@ SiteDatabase SiteDatabase::Create(const std::filesystem::path& file, const SiteO
   }
 }
 
-SiteDatabase SiteDatabase::Open(const std::filesystem::path& file) {
+SiteDatabase SiteDatabase::Open(const std::filesystem::path& file) { return OpenFile(file, false); }
+
+SiteDatabase SiteDatabase::OpenReadOnly(const std::filesystem::path& file) {
+  return OpenFile(file, true);
+}
+
+SiteDatabase SiteDatabase::OpenFile(const std::filesystem::path& file, bool read_only) {
   if (!std::filesystem::is_regular_file(file)) {
     throw BadInputError(file.string() +
                         ": no such site database (create one with 'littermap "
                         "site init')");
   }
-  SiteDatabase site(file, SqliteDatabase::Mode::kReadWrite);
+  SiteDatabase site(file,
+                    read_only ? SqliteDatabase::Mode::kReadOnly : SqliteDatabase::Mode::kReadWrite);
   try {
-    OpenChecked(site);
+    OpenChecked(site, read_only);
   } catch (const SqliteError& e) {
     // The statements that open a site are those of every site littermap writes: one that fails
     // here found a damaged file, not a bug.
@@ -105,7 +112,7 @@ SiteDatabase SiteDatabase::Open(const std::filesystem::path& file) {
   return site;
 }
 
-void SiteDatabase::OpenChecked(SiteDatabase& site) {
+void SiteDatabase::OpenChecked(SiteDatabase& site, bool read_only) {
   const std::filesystem::path& file = site.database_.file();
   CheckIsGeoPackage(site.database_);
   if (SiteSchemaVersion(site.database_) == 0 || !site.database_.HasTable("sites")) {
@@ -113,8 +120,21 @@ void SiteDatabase::OpenChecked(SiteDatabase& site) {
                         ": a GeoPackage but not a littermap site database (no "
                         "littermap_schema_version table); create one with 'littermap site init'");
   }
-  site.Configure();
-  site.InTransaction([&] { MigrateSiteSchema(site.database_); });
+  if (read_only) {
+    site.database_.Execute("PRAGMA foreign_keys = ON");
+    const int version = SiteSchemaVersion(site.database_);
+    if (version != LatestSiteSchemaVersion()) {
+      throw BadInputError(file.string() + ": site schema version " + std::to_string(version) +
+                          ", this littermap reads version " +
+                          std::to_string(LatestSiteSchemaVersion()) +
+                          (version < LatestSiteSchemaVersion()
+                               ? "; a command that writes the site (ingest, heatmap) upgrades it"
+                               : "; it was written by a newer littermap"));
+    }
+  } else {
+    site.Configure();
+    site.InTransaction([&] { MigrateSiteSchema(site.database_); });
+  }
   CheckSiteSchema(site.database_);
   site.LoadSite();
 }

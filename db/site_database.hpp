@@ -115,6 +115,10 @@ class SiteDatabase {
   // Throws BadInputError naming the file when it is not a littermap site GeoPackage; applies
   // pending schema migrations.
   static SiteDatabase Open(const std::filesystem::path& file);
+  // For the commands that only read (report): opens the file read-only, so a site one may only
+  // read (a share, a copy with mode 0444) is enough. A site that needs a schema migration is a
+  // BadInputError saying that a writing command upgrades it.
+  static SiteDatabase OpenReadOnly(const std::filesystem::path& file);
 
   const SiteInfo& site() const { return site_; }
   SqliteDatabase& sql() { return database_; }
@@ -159,8 +163,9 @@ class SiteDatabase {
   explicit SiteDatabase(const std::filesystem::path& file, SqliteDatabase::Mode mode);
   void Configure();
   void LoadSite();
-  // The checks and migrations of Open, on an opened file.
-  static void OpenChecked(SiteDatabase& site);
+  // The checks and (unless read_only) migrations of Open, on an opened file.
+  static void OpenChecked(SiteDatabase& site, bool read_only);
+  static SiteDatabase OpenFile(const std::filesystem::path& file, bool read_only);
 
   SqliteDatabase database_;
   SiteInfo site_;

@@ -2,9 +2,7 @@
 
 #include <cstdio>
 
-#include <opencv2/imgcodecs.hpp>
-
-#include "core/error.hpp"
+#include "bag/image_codec.hpp"
 
 namespace littermap::detect {
 
@@ -14,10 +12,7 @@ FrameCallback DebugFrameWriter(const std::filesystem::path& directory) {
   return [directory](const RgbdFrame& frame, const FrameSegmentation& segmentation) {
     char name[64];
     std::snprintf(name, sizeof name, "frame_%06zu.png", frame.index);
-    if (!cv::imwrite((directory / name).string(),
-                     DrawSegmentation(frame.colour_bgr, segmentation))) {
-      throw UsageError((directory / name).string() + ": cannot write");
-    }
+    bag::WriteImageFile(directory / name, DrawSegmentation(frame.colour_bgr, segmentation));
   };
 }
 

@@ -1,15 +1,16 @@
 #include "detect/object_sample.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdio>
 #include <fstream>
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "bag/image_codec.hpp"
 #include "core/csv_table.hpp"
 #include "core/error.hpp"
 #include "core/failure.hpp"
+#include "core/output_file.hpp"
 
 namespace littermap::detect {
 
@@ -51,25 +52,23 @@ void WriteSamples(const std::filesystem::path& directory,
                   const std::vector<ObjectSample>& samples) {
   std::error_code error;
   std::filesystem::create_directories(directory, error);
-  std::ofstream labels(directory / "labels.csv");
-  if (error || !labels) throw FileFailure(directory, "cannot create the sample files", errno);
+  if (error) throw FileFailure(directory, "cannot create the folder", error.value());
+  OutputFile labels_file(directory / "labels.csv");
+  std::ostream& labels = labels_file.stream();
   labels << "crop,mask,label,size_m,width_m,height_m,range_m,source\n";
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const ObjectSample& s = samples[i];
     char crop[32], mask[32];
     std::snprintf(crop, sizeof crop, "crop_%06zu.png", i);
     std::snprintf(mask, sizeof mask, "mask_%06zu.png", i);
-    if (!cv::imwrite((directory / crop).string(), s.colour_bgr) ||
-        !cv::imwrite((directory / mask).string(), s.mask)) {
-      throw FileFailure(directory / crop, "cannot write", errno);
-    }
+    bag::WriteImageFile(directory / crop, s.colour_bgr);
+    bag::WriteImageFile(directory / mask, s.mask);
     char line[256];
     std::snprintf(line, sizeof line, "%s,%s,%s,%.4f,%.4f,%.4f,%.3f,%s\n", crop, mask,
                   s.label.c_str(), s.size_m, s.width_m, s.height_m, s.range_m, s.source.c_str());
     labels << line;
   }
-  labels.flush();
-  if (!labels) throw FileFailure(directory / "labels.csv", "cannot write", errno);
+  labels_file.Commit();
 }
 
 }  // namespace littermap::detect

@@ -57,14 +57,16 @@ void RgbdFrameReader::ForEach(std::size_t every,
       }
     }
     auto image = bag::DecodeCameraImage(reader, *raw);
+    std::string origin = bag::MessageOrigin(reader, *raw);
     const std::optional<bag::CompressedRgbd> pair =
-        is_colour ? pairing.AddColour(std::move(image)) : pairing.AddDepth(std::move(image));
+        is_colour ? pairing.AddColour(std::move(image), std::move(origin))
+                  : pairing.AddDepth(std::move(image), std::move(origin));
     if (!pair) continue;
     RgbdFrame frame;
     frame.index = wanted_index;
     frame.stamp_ns = pair->stamp_ns;
-    frame.colour_bgr = bag::DecodeColor(pair->colour);
-    frame.depth_mm = bag::DecodeDepthMm(pair->depth);
+    frame.colour_bgr = bag::DecodeColor(*pair);
+    frame.depth_mm = bag::DecodeDepthMm(*pair);
     if (tilt && std::llabs(frame.stamp_ns - tilt->first) <= max_imu_age) frame.tilt = tilt->second;
     visit(frame);
   }

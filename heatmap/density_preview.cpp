@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstdio>
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "bag/image_codec.hpp"
 #include "core/error.hpp"
 
 namespace littermap::heatmap {
@@ -146,8 +146,7 @@ void WriteDensityPreview(const std::filesystem::path& file, const Raster& densit
   map.copyTo(canvas(cv::Rect(0, kTitleHeightPx, map.cols, map.rows)));
   cv::putText(canvas, options.title, {8, 25}, cv::FONT_HERSHEY_SIMPLEX, 0.6, kInk, 1, cv::LINE_AA);
   DrawLegend(canvas, map.cols, map.rows, peak, options.unit, static_cast<bool>(options.occupancy));
-  if (!cv::imwrite(file.string(), canvas))
-    throw UsageError(file.string() + ": cannot write the PNG");
+  bag::WriteImageFile(file, canvas);
 }
 
 }  // namespace littermap::heatmap

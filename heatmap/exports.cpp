@@ -1,27 +1,14 @@
 #include "heatmap/exports.hpp"
 
-#include <cerrno>
 #include <cstdio>
-#include <fstream>
 #include <string>
 #include <string_view>
 
 #include "core/error.hpp"
-#include "core/failure.hpp"
+#include "core/output_file.hpp"
 
 namespace littermap::heatmap {
 namespace {
-
-std::ofstream Create(const std::filesystem::path& file) {
-  std::ofstream out(file);
-  if (!out) throw UsageError(file.string() + ": cannot create");
-  return out;
-}
-
-void Finish(std::ofstream& out, const std::filesystem::path& file) {
-  out.close();
-  if (!out) throw FileFailure(file, "cannot write", errno);
-}
 
 // Formats one or two numbers (b is ignored by a one-number format).
 std::string Format(const char* format, double a, double b) {
@@ -73,7 +60,8 @@ std::string LonLatColumns(const Wgs84Transform* wgs84, const db::PointXY& crs) {
 
 void WriteItemsCsv(const std::filesystem::path& file, std::span<const db::ItemRecord> items,
                    const db::SiteFrame& frame, const Wgs84Transform* wgs84) {
-  std::ofstream out = Create(file);
+  OutputFile output(file);
+  std::ostream& out = output.stream();
   out << "fid,class,site_x_m,site_y_m,easting_m,northing_m,lon_deg,lat_deg,size_m,confidence,"
          "first_run_id,last_run_id,times_seen\n";
   for (const db::ItemRecord& item : items) {
@@ -84,12 +72,13 @@ void WriteItemsCsv(const std::filesystem::path& file, std::span<const db::ItemRe
         << Format("%.3f,%.3f", item.size_m, item.confidence) << ',' << item.first_run_id << ','
         << item.last_run_id << ',' << item.times_seen << '\n';
   }
-  Finish(out, file);
+  output.Commit();
 }
 
 void WriteItemsGeoJson(const std::filesystem::path& file, std::span<const db::ItemRecord> items,
                        const db::SiteFrame& frame, const Wgs84Transform& wgs84) {
-  std::ofstream out = Create(file);
+  OutputFile output(file);
+  std::ostream& out = output.stream();
   out << "{\"type\":\"FeatureCollection\",\"features\":[";
   for (std::size_t i = 0; i < items.size(); ++i) {
     const db::ItemRecord& item = items[i];
@@ -103,12 +92,13 @@ void WriteItemsGeoJson(const std::filesystem::path& file, std::span<const db::It
         << ",\"times_seen\":" << item.times_seen << "}}";
   }
   out << "\n]}\n";
-  Finish(out, file);
+  output.Commit();
 }
 
 void WriteHotspotsCsv(const std::filesystem::path& file, std::span<const Hotspot> hotspots,
                       const db::SiteFrame& frame, const Wgs84Transform* wgs84) {
-  std::ofstream out = Create(file);
+  OutputFile output(file);
+  std::ostream& out = output.stream();
   out << "rank,site_x_m,site_y_m,easting_m,northing_m,lon_deg,lat_deg,density_per_100m2_per_survey,"
          "dominant_class,items_nearby\n";
   for (const Hotspot& hotspot : hotspots) {
@@ -119,7 +109,7 @@ void WriteHotspotsCsv(const std::filesystem::path& file, std::span<const Hotspot
         << Format("%.4f", hotspot.density_per_100m2, 0.0) << ',' << CsvField(hotspot.dominant_class)
         << ',' << hotspot.items_nearby << '\n';
   }
-  Finish(out, file);
+  output.Commit();
 }
 
 }  // namespace littermap::heatmap

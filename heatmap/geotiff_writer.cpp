@@ -14,6 +14,7 @@
 
 #include "core/error.hpp"
 #include "core/failure.hpp"
+#include "core/output_file.hpp"
 #include "heatmap/tiff_tags.hpp"
 
 namespace littermap::heatmap {
@@ -34,12 +35,13 @@ int IgnoreWarning(TIFF*, void*, const char*, const char*, va_list) { return 1; }
 
 class TiffFile {
  public:
-  TiffFile(const std::filesystem::path& file) : file_(file) {
+  // Writes `path`; failures name `file`, the output `path` becomes.
+  TiffFile(const std::filesystem::path& path, const std::filesystem::path& file) : file_(file) {
     RegisterGeoTiffTags();
     TIFFOpenOptions* options = TIFFOpenOptionsAlloc();
     TIFFOpenOptionsSetErrorHandlerExtR(options, CollectMessage, &message_);
     TIFFOpenOptionsSetWarningHandlerExtR(options, IgnoreWarning, nullptr);
-    tif_ = TIFFOpenExt(file.c_str(), "w", options);
+    tif_ = TIFFOpenExt(path.c_str(), "w", options);
     TIFFOpenOptionsFree(options);
     if (tif_ == nullptr) Fail("cannot create the file");
   }
@@ -185,7 +187,8 @@ GeoTiffResult WriteCloudOptimizedGeoTiff(const std::filesystem::path& file, cons
     overviews.push_back(Downsample2x(*level, options.nodata));
     level = &overviews.back();
   }
-  TiffFile tiff(file);
+  OutputFile output = OutputFile::ByName(file);
+  TiffFile tiff(output.temporary(), file);
   // All IFDs first, with their tile arrays deferred (libtiff's COG support).
   for (std::size_t i = 0; i <= overviews.size(); ++i) {
     const Raster& image = i == 0 ? raster : overviews[i - 1];
@@ -204,6 +207,7 @@ GeoTiffResult WriteCloudOptimizedGeoTiff(const std::filesystem::path& file, cons
     tiff.Check(TIFFForceStrileArrayWriting(tiff.get()), "writing the tile index");
   }
   tiff.Close();
+  output.Commit();
   GeoTiffResult result;
   result.overview_count = static_cast<int>(overviews.size());
   result.file_size_bytes = std::filesystem::file_size(file);

@@ -1,18 +1,16 @@
 #include "reconstruct/occupancy_grid.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <string>
 
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 
+#include "bag/image_codec.hpp"
 #include "core/error.hpp"
-#include "core/failure.hpp"
 #include "core/map_server_grey.hpp"
+#include "core/output_file.hpp"
 
 namespace littermap::reconstruct {
 namespace {
@@ -131,14 +129,13 @@ std::vector<std::uint8_t> OccupancyGrid::Image() const {
 void OccupancyGrid::WritePgmYaml(const std::filesystem::path& pgm_path,
                                  const std::filesystem::path& yaml_path) const {
   const std::vector<std::uint8_t> image = Image();
-  std::ofstream pgm(pgm_path, std::ios::binary);
-  if (!pgm) throw UsageError(pgm_path.string() + ": cannot create the map image");
+  OutputFile pgm_file(pgm_path);
+  std::ostream& pgm = pgm_file.stream();
   pgm << "P5\n# littermap occupancy grid\n" << width_ << " " << height_ << "\n255\n";
   pgm.write(reinterpret_cast<const char*>(image.data()),
             static_cast<std::streamsize>(image.size()));
-  if (!pgm) throw FileFailure(pgm_path, "cannot write", errno);
-  std::ofstream yaml(yaml_path);
-  if (!yaml) throw UsageError(yaml_path.string() + ": cannot create the map description");
+  OutputFile yaml_file(yaml_path);
+  std::ostream& yaml = yaml_file.stream();
   const double cell = options_.cell_size_m;
   yaml << "image: " << pgm_path.filename().string() << "\n"
        << "mode: trinary\n"
@@ -146,7 +143,8 @@ void OccupancyGrid::WritePgmYaml(const std::filesystem::path& pgm_path,
        << "origin: [" << static_cast<double>(min_.x) * cell << ", "
        << static_cast<double>(min_.y) * cell << ", 0.0]\n"
        << "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
-  if (!yaml) throw FileFailure(yaml_path, "cannot write", errno);
+  pgm_file.Commit();
+  yaml_file.Commit();
 }
 
 void OccupancyGrid::WritePng(const std::filesystem::path& png_path) const {
@@ -154,9 +152,7 @@ void OccupancyGrid::WritePng(const std::filesystem::path& png_path) const {
   if (image.empty()) image.assign(1, kUnknown);
   const cv::Mat mat(std::max<int>(1, static_cast<int>(height_)),
                     std::max<int>(1, static_cast<int>(width_)), CV_8UC1, image.data());
-  if (!cv::imwrite(png_path.string(), mat)) {
-    throw UsageError(png_path.string() + ": cannot write the map preview");
-  }
+  bag::WriteImageFile(png_path, mat);
 }
 
 }  // namespace littermap::reconstruct

@@ -157,9 +157,11 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
       continue;
     }
     if (auto image = bag::TakeCameraImage(message->message)) {
-      std::optional<bag::CompressedRgbd> frame = message->topic->name == options.topics.colour
-                                                     ? pairing.AddColour(std::move(*image))
-                                                     : pairing.AddDepth(std::move(*image));
+      std::string origin = bag::MessageOrigin(reader, *message);
+      std::optional<bag::CompressedRgbd> frame =
+          message->topic->name == options.topics.colour
+              ? pairing.AddColour(std::move(*image), std::move(origin))
+              : pairing.AddDepth(std::move(*image), std::move(origin));
       if (frame) {  // images are read only for an RGB-D tracker
         const auto odometry_now = odometry.At(frame->stamp_ns);
         rgbd->AddFrame(std::move(*frame),
@@ -228,11 +230,12 @@ ReconstructionResult ReconstructBagVisually(const std::filesystem::path& bag,
     if (!image) continue;
     const bool colour = message->topic->name == options.topics.colour;
     if (colour && ++done % 20 == 0) ReportProgress(progress, {task, done, total});
+    std::string origin = bag::MessageOrigin(reader, *message);
     std::optional<bag::CompressedRgbd> frame =
-        colour ? pairing.AddColour(std::move(*image)) : pairing.AddDepth(std::move(*image));
+        colour ? pairing.AddColour(std::move(*image), std::move(origin))
+               : pairing.AddDepth(std::move(*image), std::move(origin));
     if (!frame) continue;
-    const RgbdImage decoded{bag::DecodeColor(frame->colour), bag::DecodeDepthMm(frame->depth),
-                            0.001};
+    const RgbdImage decoded{bag::DecodeColor(*frame), bag::DecodeDepthMm(*frame), 0.001};
     frames->push_back({frame->stamp_ns, odometry.Track(decoded)});
   }
   ReportProgress(progress, {task, done, total});

@@ -80,8 +80,8 @@ RgbdTracker::Frame* RgbdTracker::FrameFor(TimestampNs stamp_ns) {
 const RgbdKeyPoints& RgbdTracker::FeaturesOf(Frame* frame) {
   if (!frame->features) {
     RgbdImage image;
-    image.colour_bgr = bag::DecodeColor(frame->images.colour);
-    image.depth = bag::DecodeDepthMm(frame->images.depth);
+    image.colour_bgr = bag::DecodeColor(frame->images);
+    image.depth = bag::DecodeDepthMm(frame->images);
     frame->features = aligner_.Extract(image, camera_);
   }
   return *frame->features;

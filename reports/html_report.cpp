@@ -7,7 +7,7 @@
 #include <set>
 #include <utility>
 
-#include "core/atomic_file.hpp"
+#include "core/output_file.hpp"
 #include "core/time.hpp"
 #include "reports/class_palette.hpp"
 #include "reports/html_text.hpp"

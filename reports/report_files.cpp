@@ -30,7 +30,7 @@ SiteReport WriteReportFiles(db::SiteDatabase& site, const std::filesystem::path&
 
 SiteReport WriteReportFiles(const std::filesystem::path& site_file,
                             const std::filesystem::path& dir, const ReportFilesOptions& options) {
-  db::SiteDatabase site = db::SiteDatabase::Open(site_file);
+  db::SiteDatabase site = db::SiteDatabase::OpenReadOnly(site_file);
   return WriteReportFiles(site, dir, options);
 }
 

@@ -2,7 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/atomic_file.hpp"
+#include "core/output_file.hpp"
 #include "core/time.hpp"
 
 namespace littermap::reports {

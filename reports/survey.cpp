@@ -1,12 +1,12 @@
 #include "reports/survey.hpp"
 
 #include <exception>
-#include <fstream>
 #include <utility>
 #include <vector>
 
 #include "core/error.hpp"
 #include "core/failure.hpp"
+#include "core/output_file.hpp"
 #include "db/site_database.hpp"
 #include "heatmap/heatmap_files.hpp"
 #include "reports/report_files.hpp"
@@ -137,7 +137,7 @@ void RunStage(const Survey& survey, const Stage& stage, const std::string& label
                                survey.out.string() +
                                "; once fixed, the same command resumes at this stage");
   }
-  std::ofstream(marker) << stage.name << " finished\n";
+  WriteFileAtomically(marker, stage.name + " finished\n");
 }
 
 }  // namespace

@@ -1,17 +1,12 @@
 #include "run/detections_file.hpp"
 
-#include <cerrno>
 #include <cstdio>
 #include <utility>
-
-#include "core/error.hpp"
-#include "core/failure.hpp"
 
 namespace littermap::run {
 
 DetectionsCsvWriter::DetectionsCsvWriter(std::filesystem::path file)
-    : file_(std::move(file)), out_(file_) {
-  if (!out_) throw UsageError(file_.string() + ": cannot create");
+    : output_(std::move(file)), out_(output_.stream()) {
   out_ << "frame,stamp_ns,u,v,width_px,height_px,x,y,z,size_m,height_m,range_m,class,confidence,"
           "litter_probability,item\n";
 }
@@ -30,9 +25,6 @@ void DetectionsCsvWriter::Write(const detect::PlacedObject& placed, const std::s
   out_ << line << '\n';
 }
 
-void DetectionsCsvWriter::Close() {
-  if (!out_.flush()) throw FileFailure(file_, "cannot write", errno);
-  out_.close();
-}
+void DetectionsCsvWriter::Close() { output_.Commit(); }
 
 }  // namespace littermap::run

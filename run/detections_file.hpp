@@ -6,9 +6,9 @@
 // this one view and the fused item it joined (-1: none, e.g. clutter).
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
+#include "core/output_file.hpp"
 #include "detect/litter_classifier.hpp"
 #include "detect/run_objects.hpp"
 
@@ -16,17 +16,17 @@ namespace littermap::run {
 
 class DetectionsCsvWriter {
  public:
-  // Throws UsageError if the file cannot be created.
+  // Writes FILE.tmp; throws the FileFailure naming FILE if it cannot be created.
   explicit DetectionsCsvWriter(std::filesystem::path file);
 
   void Write(const detect::PlacedObject& placed, const std::string& class_name,
              const detect::Classification& classification, long item);
-  // Throws InternalError if writing failed.
+  // Renames FILE.tmp to FILE; throws the FileFailure naming FILE if writing failed.
   void Close();
 
  private:
-  std::filesystem::path file_;
-  std::ofstream out_;
+  OutputFile output_;
+  std::ostream& out_;
 };
 
 }  // namespace littermap::run

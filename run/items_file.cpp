@@ -1,20 +1,20 @@
 #include "run/items_file.hpp"
 
-#include <cerrno>
 #include <cstdio>
-#include <fstream>
 
 #include "core/csv_table.hpp"
 #include "core/error.hpp"
 #include "core/failure.hpp"
+#include "core/output_file.hpp"
+#include "core/utf8.hpp"
 
 namespace littermap::run {
 
 ItemsWritten WriteItemsCsv(const std::filesystem::path& file,
                            const std::vector<detect::LitterItem>& items,
                            const detect::LitterClassifier& classifier) {
-  std::ofstream out(file);
-  if (!out) throw UsageError(file.string() + ": cannot create");
+  OutputFile output(file);
+  std::ostream& out = output.stream();
   out << "id,class,x,y,z,size_m,confidence,views,litter,litter_probability,first_seen_ns,"
          "last_seen_ns\n";
   const std::size_t clutter = classifier.ClassIndex("clutter");
@@ -38,7 +38,7 @@ ItemsWritten WriteItemsCsv(const std::filesystem::path& file,
                   static_cast<long long>(item.last_seen_ns));
     out << line << '\n';
   }
-  if (!out.flush()) throw FileFailure(file, "cannot write", errno);
+  output.Commit();
   return written;
 }
 
@@ -51,6 +51,7 @@ std::vector<ItemRow> ReadItemsCsv(const std::filesystem::path& file,
     ItemRow item;
     item.id = row.NonEmptyText("id");
     item.class_name = row.NonEmptyText("class");
+    if (!IsUtf8(item.class_name)) row.Fail("class", "is not valid UTF-8");
     item.x_m = row.Number("x");
     item.y_m = row.Number("y");
     if (row.Has("z")) item.z_m = row.Number("z");

@@ -1,6 +1,5 @@
 #include "run/quality_file.hpp"
 
-#include <cerrno>
 #include <fstream>
 #include <sstream>
 #include <utility>
@@ -9,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "core/failure.hpp"
+#include "core/output_file.hpp"
 
 namespace littermap::run {
 namespace {
@@ -200,10 +200,7 @@ std::optional<ReconstructionQuality> QualityFromJson(std::string_view text) {
 }
 
 void WriteQualityFile(const std::filesystem::path& file, const ReconstructionQuality& quality) {
-  std::ofstream out(file);
-  if (!out) throw UsageError(file.string() + ": cannot create");
-  out << ToJson(quality);
-  if (!out) throw FileFailure(file, "cannot write", errno);
+  WriteFileAtomically(file, ToJson(quality));
 }
 
 ReconstructionQuality ReadQualityFile(const std::filesystem::path& file) {

@@ -1,13 +1,12 @@
 #include "run/run_writer.hpp"
 
-#include <cerrno>
 #include <cstdio>
-#include <fstream>
 #include <optional>
 
 #include "bag/tum_trajectory.hpp"
 #include "core/error.hpp"
 #include "core/failure.hpp"
+#include "core/output_file.hpp"
 #include "run/quality_file.hpp"
 #include "run/run_files.hpp"
 
@@ -20,14 +19,7 @@ namespace {
 void CreateRunDirectory(const std::filesystem::path& run_dir) {
   std::error_code error;
   std::filesystem::create_directories(run_dir, error);
-  if (error) throw UsageError(run_dir.string() + ": cannot create: " + error.message());
-}
-
-void WriteText(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path);
-  if (!out) throw UsageError(path.string() + ": cannot create");
-  out << text;
-  if (!out) throw FileFailure(path, "cannot write", errno);
+  if (error) throw FileFailure(run_dir, "cannot create the folder", error.value());
 }
 
 void WriteRoutines(const std::filesystem::path& path, const std::vector<ScanRecord>& scans) {
@@ -38,7 +30,7 @@ void WriteRoutines(const std::filesystem::path& path, const std::vector<ScanReco
     text += bag::FormatTumStamp(scan.stamp_ns) + ',' + std::string(RoutineName(scan.routine)) +
             ',' + ratio + ',' + std::to_string(scan.landmark_sightings) + '\n';
   }
-  WriteText(path, text);
+  WriteFileAtomically(path, text);
 }
 
 std::string_view SourceName(CameraPoseSource source) {
@@ -64,7 +56,7 @@ void WriteCameraPoses(const std::filesystem::path& run_dir, const SlamPipeline& 
     sources +=
         bag::FormatTumStamp(pose.stamp_ns) + ',' + std::string(SourceName(pose.source)) + '\n';
   }
-  WriteText(RunFiles(run_dir).camera_sources(), sources);
+  WriteFileAtomically(RunFiles(run_dir).camera_sources(), sources);
   bag::WriteTumTrajectory(RunFiles(run_dir).camera(), poses);
 }
 
@@ -176,7 +168,7 @@ void WriteVisualRun(const std::filesystem::path& run_dir, const std::vector<Visu
   }
   bag::WriteTumTrajectory(files.trajectory(), trajectory);
   bag::WriteTumTrajectory(files.key_frames(), key_frames);
-  WriteText(files.routines(), routines);
+  WriteFileAtomically(files.routines(), routines);
   ReconstructionQuality quality;
   quality.visual_odometry = true;
   quality.frames = stats.frames;

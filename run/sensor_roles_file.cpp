@@ -1,12 +1,11 @@
 #include "run/sensor_roles_file.hpp"
 
-#include <cerrno>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "bag/bag_reader.hpp"
 #include "core/error.hpp"
 #include "core/failure.hpp"
+#include "core/output_file.hpp"
 
 namespace littermap::run {
 
@@ -28,9 +27,8 @@ void WriteSensorRoles(const std::filesystem::path& file, const bag::SensorRoles&
     json[role] = {{"topic", bag::TopicOf(roles, role)},
                   {"found", found == roles.found.end() ? "missing" : found->second}};
   }
-  std::ofstream out(file);
-  out << json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
-  if (!out) throw FileFailure(file, "cannot write", errno);
+  WriteFileAtomically(file,
+                      json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 }
 
 }  // namespace littermap::run

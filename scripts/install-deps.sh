@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
-  libeigen3-dev libopencv-dev libsqlite3-dev zlib1g-dev libpng-dev
+  libeigen3-dev libopencv-dev libsqlite3-dev zlib1g-dev libpng-dev libjpeg-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libzstd-dev liblz4-dev
   libgtest-dev libbenchmark-dev libceres-dev libnanoflann-dev ccache
   libproj-dev libtiff-dev libgeotiff-dev libpcl-dev libopenni2-dev

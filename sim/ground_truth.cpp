@@ -1,29 +1,17 @@
 #include "sim/ground_truth.hpp"
 
-#include <cerrno>
 #include <cstdio>
-#include <fstream>
 
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
 #include "core/failure.hpp"
+#include "core/output_file.hpp"
 
 namespace littermap::sim {
 namespace {
 
 using nlohmann::json;
-
-std::ofstream Open(const std::filesystem::path& path) {
-  std::ofstream out(path);
-  if (!out) throw FileFailure(path, "cannot create", errno);
-  return out;
-}
-
-void Close(std::ofstream& out, const std::filesystem::path& path) {
-  out.flush();
-  if (!out) throw FileFailure(path, "cannot write", errno);
-}
 
 std::string Format(const char* format, auto... values) {
   char line[256];
@@ -32,7 +20,8 @@ std::string Format(const char* format, auto... values) {
 }
 
 std::size_t WriteObjects(const std::filesystem::path& path, const World& world, ObjectKind kind) {
-  std::ofstream out = Open(path);
+  OutputFile file(path);
+  std::ostream& out = file.stream();
   out << "id,class,x,y,z,size_m\n";
   std::size_t count = 0;
   for (const WorldObject& o : world.objects) {
@@ -41,7 +30,7 @@ std::size_t WriteObjects(const std::filesystem::path& path, const World& world, 
                   o.center_m.y(), o.center_m.z(), o.size());
     ++count;
   }
-  Close(out, path);
+  file.Commit();
   return count;
 }
 
@@ -150,7 +139,8 @@ GroundTruthResult WriteGroundTruth(const std::filesystem::path& directory,
   if (error) throw FileFailure(directory, "cannot create", error.value());
   GroundTruthResult result;
   const auto tum_path = directory / "trajectory.tum";
-  std::ofstream tum = Open(tum_path);
+  OutputFile tum_file(tum_path);
+  std::ostream& tum = tum_file.stream();
   tum << "# timestamp tx ty tz qx qy qz qw (true base_link in world)\n";
   for (const RobotState& state : simulation.states()) {
     const Eigen::Isometry3d T = simulation.TrueBasePose(state.t_s);
@@ -160,15 +150,13 @@ GroundTruthResult WriteGroundTruth(const std::filesystem::path& directory,
                   q.z(), q.w());
     ++result.poses;
   }
-  Close(tum, tum_path);
+  tum_file.Commit();
   result.litter = WriteObjects(directory / "litter.csv", simulation.world(), ObjectKind::kLitter);
   result.natural =
       WriteObjects(directory / "natural.csv", simulation.world(), ObjectKind::kNatural);
-  const auto json_path = directory / "world.json";
-  std::ofstream out = Open(json_path);
-  out << WorldJson(simulation).dump(1, ' ', false, nlohmann::json::error_handler_t::replace)
-      << "\n";
-  Close(out, json_path);
+  WriteFileAtomically(
+      directory / "world.json",
+      WorldJson(simulation).dump(1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
   return result;
 }
 

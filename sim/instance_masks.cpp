@@ -1,28 +1,22 @@
 #include "sim/instance_masks.hpp"
 
-#include <cerrno>
 #include <cstdio>
 #include <map>
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "bag/image_codec.hpp"
 #include "core/error.hpp"
 #include "core/failure.hpp"
 
 namespace littermap::sim {
 namespace {
 
-std::ofstream OpenCsv(const std::filesystem::path& path, const char* header) {
-  std::ofstream out(path);
-  if (!out) throw FileFailure(path, "cannot create", errno);
-  out << header << '\n';
-  return out;
-}
-
-void CloseCsv(std::ofstream& out, const std::filesystem::path& path) {
-  out.flush();
-  if (!out) throw FileFailure(path, "cannot write", errno);
-  out.close();
+std::filesystem::path CreatedFolder(const std::filesystem::path& folder) {
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error) throw FileFailure(folder, "cannot create", error.value());
+  return folder;
 }
 
 }  // namespace
@@ -43,12 +37,11 @@ cv::Mat InstanceIdsToMask(const cv::Mat& instance_ids) {
 }
 
 InstanceMaskWriter::InstanceMaskWriter(const std::filesystem::path& truth_dir)
-    : directory_(truth_dir / "masks") {
-  std::error_code error;
-  std::filesystem::create_directories(directory_, error);
-  if (error) throw FileFailure(directory_, "cannot create", error.value());
-  index_ = OpenCsv(directory_ / "index.csv", "frame,stamp_ns,file");
-  visible_ = OpenCsv(directory_ / "visible.csv", "frame,object_id,pixels,depth_pixels");
+    : directory_(CreatedFolder(truth_dir / "masks")),
+      index_(directory_ / "index.csv"),
+      visible_(directory_ / "visible.csv") {
+  index_.stream() << "frame,stamp_ns,file\n";
+  visible_.stream() << "frame,object_id,pixels,depth_pixels\n";
 }
 
 void InstanceMaskWriter::Write(std::size_t frame, TimestampNs stamp_ns, const cv::Mat& instance_ids,
@@ -69,18 +62,17 @@ void InstanceMaskWriter::Write(std::size_t frame, TimestampNs stamp_ns, const cv
     }
   }
   for (const auto& [value, count] : pixels) {
-    visible_ << frame << ',' << value - 1 << ',' << count.first << ',' << count.second << '\n';
+    visible_.stream() << frame << ',' << value - 1 << ',' << count.first << ',' << count.second
+                      << '\n';
   }
-  if (!cv::imwrite(path.string(), mask, {cv::IMWRITE_PNG_COMPRESSION, 3})) {
-    throw FileFailure(path, "cannot write the mask", errno);
-  }
-  index_ << frame << ',' << stamp_ns << ",masks/" << name << '\n';
+  bag::WriteImageFile(path, mask, {cv::IMWRITE_PNG_COMPRESSION, 3});
+  index_.stream() << frame << ',' << stamp_ns << ",masks/" << name << '\n';
   ++written_;
 }
 
 void InstanceMaskWriter::Close() {
-  CloseCsv(index_, directory_ / "index.csv");
-  CloseCsv(visible_, directory_ / "visible.csv");
+  index_.Commit();
+  visible_.Commit();
 }
 
 }  // namespace littermap::sim

@@ -19,10 +19,10 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 
 #include <opencv2/core.hpp>
 
+#include "core/output_file.hpp"
 #include "core/time.hpp"
 
 namespace littermap::sim {
@@ -50,8 +50,8 @@ class InstanceMaskWriter {
 
  private:
   std::filesystem::path directory_;
-  std::ofstream index_;
-  std::ofstream visible_;
+  OutputFile index_;
+  OutputFile visible_;
   std::size_t written_ = 0;
 };
 

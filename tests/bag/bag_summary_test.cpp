@@ -262,6 +262,15 @@ TEST(VerifyMessages, DecodesImagesAndChecksTheirSizeAgainstTheCameraInfo) {
             std::string::npos)
       << truncated;
 
+  msg::CompressedImage short_jpeg = colour;            // a JPEG cut short still decodes: damaged
+  short_jpeg.data.resize(short_jpeg.data.size() - 8);  // its last bytes and end marker
+  const std::string damaged = VerifyImages(dir / "short", short_jpeg, depth);
+  EXPECT_NE(damaged.find("topic '/camera/color/image_raw/compressed' message #0"),
+            std::string::npos)
+      << damaged;
+  EXPECT_NE(damaged.find("JPEG is damaged: Premature end of JPEG file"), std::string::npos)
+      << damaged;
+
   const msg::CompressedImage small =
       EncodeColorJpeg(cv::Mat(24, 32, CV_8UC3, cv::Scalar::all(90)), header);
   const std::string resized = VerifyImages(dir / "small", small, depth);

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 
+#include "core/sqlite_database.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 #include "support/test_files.hpp"
@@ -45,6 +46,39 @@ TEST(HostileInputsCli, SiteOriginsMustBeFiniteAndInTheirCrsArea) {
                          " --name p --crs EPSG:32632 --origin 691000 5334000")
                 .exit_code,
             0);
+}
+
+// A depth image whose PNG data is damaged inside a bag that is otherwise sound: `detect` stops
+// naming the bag, topic and message, with libpng's reason in littermap's words (nothing printed
+// by libpng itself).
+TEST(HostileInputsCli, AnImageThatDoesNotDecodeIsNamedByTopicAndMessage) {
+  TempDir dir;
+  const std::filesystem::path bag = dir / "bag";
+  ASSERT_EQ(RunLittermap("-q simulate " + Quote(test::SampleWorld()) + " -o " + Quote(bag) +
+                         " --truth " + Quote(dir / "truth") + " --duration 3")
+                .exit_code,
+            0);
+  {
+    // 64 zero bytes in the middle of the third depth message: inside its PNG's compressed data.
+    SqliteDatabase database(bag / "bag_0.db3", SqliteDatabase::Mode::kReadWrite);
+    database.Execute(
+        "UPDATE messages SET data = substr(data, 1, length(data) / 2) || zeroblob(64) || "
+        "substr(data, length(data) / 2 + 65) WHERE id = (SELECT m.id FROM messages m JOIN topics "
+        "t ON m.topic_id = t.id WHERE t.name = '/camera/depth/image_raw/compressed' "
+        "ORDER BY m.timestamp LIMIT 1 OFFSET 2)");
+  }
+  std::filesystem::create_directories(dir / "run");
+  const test::CommandResult result =
+      RunLittermap("-q detect " + Quote(bag) + " --run " + Quote(dir / "run") + " --trajectory " +
+                   Quote(dir / "truth" / "trajectory.tum") + " --every 1");
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(FirstLine(result.output)
+                .find(bag.string() + ": topic '/camera/depth/image_raw/compressed' message #2"),
+            std::string::npos)
+      << result.output;
+  EXPECT_NE(FirstLine(result.output).find("PNG does not decode: "), std::string::npos)
+      << result.output;
+  EXPECT_EQ(result.output.find("libpng"), std::string::npos) << result.output;
 }
 
 TEST(HostileInputsCli, NamesMustBeUtf8) {

@@ -2,6 +2,7 @@
 // once on one site, and the heatmap outputs.
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
@@ -11,6 +12,7 @@
 #include "core/sqlite_database.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
+#include "support/test_files.hpp"
 
 namespace littermap {
 namespace {
@@ -79,6 +81,49 @@ TEST(IngestHeatmapCli, IngestIsIdempotentAndHeatmapWritesEverything) {
   EXPECT_GT(Integer(site, "SELECT count(*) FROM hotspots"), 0);
   EXPECT_EQ(Text(site, "PRAGMA integrity_check"), "ok");
   EXPECT_EQ(Text(site, "PRAGMA foreign_key_check"), "<no row>");
+}
+
+// A site one may only read (mode 0444 in a folder of mode 0555, as on a share): `report` reads
+// it and leaves it as it was. File modes do not stop root, so as root the command runs as the
+// user nobody.
+TEST(IngestHeatmapCli, ReportReadsASiteItMayNotWrite) {
+  TempDir dir;
+  namespace fs = std::filesystem;
+  fs::create_directories(dir / "share");
+  const fs::path site = dir / "share" / "site.gpkg";
+  ASSERT_EQ(RunLittermap("-q site init " + test::Quote(site) + " --name p").exit_code, 0);
+  WriteRun(dir / "run1", 10.0, 1700000000.0, "can");
+  ASSERT_EQ(
+      RunLittermap("-q ingest " + test::Quote(site) + " " + test::Quote(dir / "run1")).exit_code,
+      0);
+  const std::string before = test::Slurp(site);
+  fs::permissions(site, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+  fs::permissions(dir / "share", fs::perms::owner_read | fs::perms::owner_exec |
+                                     fs::perms::group_read | fs::perms::group_exec |
+                                     fs::perms::others_read | fs::perms::others_exec);
+  fs::create_directories(dir / "out");
+  fs::permissions(dir / "out", fs::perms::all);
+  fs::permissions(dir.path(), fs::perms::all);
+  const std::string as_reader =
+      geteuid() == 0 ? "setpriv --reuid=65534 --regid=65534 --clear-groups " : "";
+  const test::CommandResult result =
+      test::RunCommand(as_reader + LITTERMAP_EXECUTABLE + " -q report " + test::Quote(site) +
+                       " -o " + test::Quote(dir / "out" / "report"));
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_TRUE(fs::exists(dir / "out" / "report" / "index.html"));
+  EXPECT_EQ(test::Slurp(site), before);
+  EXPECT_FALSE(fs::exists(site.string() + "-wal"));
+  // A command that writes the site says that it cannot, as an environment fault.
+  if (!as_reader.empty()) {
+    const test::CommandResult heatmap =
+        test::RunCommand(as_reader + LITTERMAP_EXECUTABLE + " -q heatmap " + test::Quote(site) +
+                         " -o " + test::Quote(dir / "out" / "maps"));
+    EXPECT_EQ(heatmap.exit_code, 4) << heatmap.output;
+    EXPECT_NE(heatmap.output.substr(0, heatmap.output.find('\n')).find(site.string()),
+              std::string::npos)
+        << heatmap.output;
+  }
+  fs::permissions(dir / "share", fs::perms::owner_all);
 }
 
 TEST(IngestHeatmapCli, TwoIngestsAtOnceBothLand) {

@@ -31,7 +31,7 @@ bag::CompressedRgbd Compress(const RgbdImage& image, TimestampNs stamp_ns) {
   image.depth.convertTo(depth_mm, CV_16U, image.depth_unit_m * 1000);
   const msg::Header header = bag::MakeHeader(stamp_ns, "camera");
   return {stamp_ns, bag::EncodeColorJpeg(image.colour_bgr, header),
-          bag::EncodeDepthPng(depth_mm, header)};
+          bag::EncodeDepthPng(depth_mm, header), "colour", "depth"};
 }
 
 RgbdImage Decode(const bag::CompressedRgbd& frame) {

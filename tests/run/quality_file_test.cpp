@@ -223,7 +223,13 @@ TEST(QualityFile, WritesAndReadsAFile) {
   EXPECT_THROW(ReadQualityFile(dir / "missing.json"), BadInputError);
   std::ofstream(dir / "array.json") << "[]";
   EXPECT_THROW(ReadQualityFile(dir / "array.json"), BadInputError);
-  EXPECT_THROW(WriteQualityFile(dir / "no" / "such" / "quality.json", read), UsageError);
+  try {  // a folder that is not there: the path is at fault
+    WriteQualityFile(dir / "no" / "such" / "quality.json", read);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& error) {
+    EXPECT_EQ(error.kind(), ErrorKind::kBadInput) << error.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "no"));
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace littermap::test {
@@ -18,8 +19,9 @@ struct CommandResult {
 // A path as one shell word (test paths hold no single quote).
 inline std::string Quote(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
 
-inline CommandResult RunLittermap(const std::string& arguments) {
-  const std::string command = std::string(LITTERMAP_EXECUTABLE) + " " + arguments + " 2>&1";
+// A shell command line, its stderr joined to its stdout.
+inline CommandResult RunCommand(const std::string& command_line) {
+  const std::string command = command_line + " 2>&1";
   CommandResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
@@ -31,6 +33,14 @@ inline CommandResult RunLittermap(const std::string& arguments) {
   const int status = pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
+}
+
+// With a file size limit (ulimit -f, in 512-byte blocks), writes beyond it fail as on a full disk.
+inline CommandResult RunLittermap(const std::string& arguments,
+                                  std::optional<int> file_size_limit_blocks = std::nullopt) {
+  const std::string command = std::string(LITTERMAP_EXECUTABLE) + " " + arguments;
+  if (!file_size_limit_blocks) return RunCommand(command);
+  return RunCommand("ulimit -f " + std::to_string(*file_size_limit_blocks) + " && " + command);
 }
 
 }  // namespace littermap::test

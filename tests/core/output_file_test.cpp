@@ -1,0 +1,103 @@
+// Outputs written under FILE.tmp and renamed when complete: FILE is the old version or the
+// whole new one, and a failed write (here a file size limit, as on a full disk) leaves neither a
+// truncated FILE nor the temporary.
+
+#include "core/output_file.hpp"
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <string>
+
+#include "core/error.hpp"
+#include "support/temp_dir.hpp"
+#include "support/test_files.hpp"
+
+namespace littermap {
+namespace {
+
+namespace fs = std::filesystem;
+using test::Slurp;
+
+TEST(OutputFile, CommitReplacesTheFileWhole) {
+  test::TempDir dir;
+  const fs::path file = dir / "out.csv";
+  WriteFileAtomically(file, "old\n");
+  {
+    OutputFile out(file);
+    out.stream() << "new,";
+    EXPECT_TRUE(fs::exists(out.temporary()));
+    EXPECT_EQ(Slurp(file), "old\n");  // readers see the old file until the commit
+    out.stream() << "whole\n";
+    out.Commit();
+  }
+  EXPECT_EQ(Slurp(file), "new,whole\n");
+  EXPECT_FALSE(fs::exists(file.string() + ".tmp"));
+}
+
+TEST(OutputFile, AnOutputNotCommittedLeavesTheOldFileAndNoTemporary) {
+  test::TempDir dir;
+  const fs::path file = dir / "map.pgm";
+  WriteFileAtomically(file, "old");
+  try {
+    OutputFile out(file);
+    out.stream() << "half of it";
+    throw std::runtime_error("the work failed half-way");
+  } catch (const std::runtime_error&) {
+  }
+  EXPECT_EQ(Slurp(file), "old");
+  EXPECT_FALSE(fs::exists(file.string() + ".tmp"));
+  // A library writing by name (libtiff) writes the temporary; nothing is opened for it.
+  {
+    OutputFile out = OutputFile::ByName(dir / "density.tif");
+    EXPECT_FALSE(fs::exists(out.temporary()));
+  }
+}
+
+TEST(OutputFile, AFullDiskIsAnEnvironmentErrorNamingTheFile) {
+  test::TempDir dir;
+  const fs::path file = dir / "trajectory.tum";
+  WriteFileAtomically(file, "old");
+  // In a child process: a 4 kB file size limit, SIGXFSZ ignored (as littermap does), so writing
+  // 64 kB fails with EFBIG as a full disk fails with ENOSPC.
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{4096, 4096};
+    setrlimit(RLIMIT_FSIZE, &limit);
+    try {
+      WriteFileAtomically(file, std::string(65536, 'x'));
+      _exit(10);
+    } catch (const Error& error) {
+      const bool named = std::string(error.what()).starts_with(file.string() + ": cannot write");
+      _exit(error.kind() == ErrorKind::kEnvironment && named ? 0 : 11);
+    } catch (...) {
+      _exit(12);
+    }
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "10: no error, 11: wrong kind or file, 12: another error";
+  EXPECT_EQ(Slurp(file), "old");
+  EXPECT_FALSE(fs::exists(file.string() + ".tmp"));
+}
+
+TEST(OutputFile, AFileThatCannotBeCreatedIsNamed) {
+  test::TempDir dir;
+  try {
+    OutputFile out(dir / "no" / "such" / "folder.csv");
+    ADD_FAILURE() << "no error";
+  } catch (const Error& error) {
+    EXPECT_EQ(error.kind(), ErrorKind::kBadInput);
+    EXPECT_EQ(std::string(error.what()), (dir / "no" / "such" / "folder.csv").string() +
+                                             ": cannot create: No such file or directory");
+  }
+}
+
+}  // namespace
+}  // namespace littermap
