@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "capture/live_capture.hpp"
+#include "cli/option_checks.hpp"
 #include "cli/simulate_run.hpp"
 #include "cli/stop_on_signals.hpp"
 #include "core/error.hpp"
@@ -93,8 +94,10 @@ void RegisterCaptureCommand(CLI::App& app, CliContext& context) {
   capture->add_option("-o,--output", arguments->simulate.bag, "Bag directory to create");
   capture->add_option("--robot", live.robot_yaml,
                       "Robot description YAML: sensor mounts on base_link, for /tf_static");
-  capture->add_option("--duration", simulate.duration_s,
-                      "Stop after this many seconds (default: until SIGINT/SIGTERM)");
+  capture
+      ->add_option("--duration", simulate.duration_s,
+                   "Stop after this many seconds (default: until SIGINT/SIGTERM)")
+      ->check(FiniteRange(0.1, kMaxDurationS));
   capture
       ->add_option("--camera-mode", live.camera_mode,
                    "Camera mode WIDTHxHEIGHT@FPS; the nearest the device offers is used")
@@ -118,8 +121,10 @@ void RegisterCaptureCommand(CLI::App& app, CliContext& context) {
                    "sim: seed of sensor noise only (the same park)")
       ->check(CLI::NonNegativeNumber);
   capture->add_option("--route", simulate.record.route, "sim: a named route of the world");
-  capture->add_option("--contact-sheet", simulate.contact_sheet_png,
-                      "sim: also write a PNG of sampled colour, depth and laser frames");
+  capture
+      ->add_option("--contact-sheet", simulate.contact_sheet_png,
+                   "sim: also write a PNG of sampled colour, depth and laser frames")
+      ->check(FileExtension({".png", ".jpg"}));
   capture->callback([arguments, &context] {
     context.run = [arguments, &context] { RunCapture(*arguments, context); };
   });

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli/cli_context.hpp"
+#include "cli/option_checks.hpp"
 #include "core/utc_date.hpp"
 #include "heatmap/heatmap_files.hpp"
 
@@ -44,13 +45,16 @@ void RegisterHeatmapCommand(CLI::App& app, CliContext& context) {
   auto& options = arguments->options.map;
   command->add_option("--class", options.class_name, "Only items of this class");
   command->option_defaults()->always_capture_default();  // shown in --help
-  command->add_option("--cell-size", options.cell_size_m, "Raster cell size (m)");
-  command->add_option("--bandwidth", options.density.kernel.bandwidth_m,
-                      "Quartic kernel radius (m)");
+  command->add_option("--cell-size", options.cell_size_m, "Raster cell size (m)")
+      ->check(FiniteRange(kMinCellSizeM, kMaxCellSizeM));
+  command
+      ->add_option("--bandwidth", options.density.kernel.bandwidth_m, "Quartic kernel radius (m)")
+      ->check(FiniteRange(kMinBandwidthM, kMaxBandwidthM));
   command->add_option("--min-effort", options.density.min_effort_surveys,
                       "Cells surveyed fewer times are nodata");
-  command->add_option("--hotspots", arguments->options.hotspots.max_count,
-                      "Number of hotspots listed");
+  command
+      ->add_option("--hotspots", arguments->options.hotspots.max_count, "Number of hotspots listed")
+      ->check(CLI::Range(0, kMaxHotspots));
   command->callback([arguments, &context] {
     context.run = [arguments, &context] { RunHeatmap(*arguments, context); };
   });

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/cli_context.hpp"
+#include "cli/option_checks.hpp"
 #include "core/utc_date.hpp"
 #include "reports/report_files.hpp"
 
@@ -42,10 +43,14 @@ void RegisterReportCommand(CLI::App& app, CliContext& context) {
   command->add_option("--to", arguments->to, "Only runs starting before (YYYY-MM-DD)");
   auto& figures = arguments->options.figures;
   command->option_defaults()->always_capture_default();  // shown in --help
-  command->add_option("--hotspots", figures.max_hotspots, "Number of hotspots listed");
-  command->add_option("--bandwidth", figures.heatmap.density.kernel.bandwidth_m,
-                      "Density kernel radius (m), also the hotspot radius");
-  command->add_option("--cell-size", figures.heatmap.cell_size_m, "Density cell size (m)");
+  command->add_option("--hotspots", figures.max_hotspots, "Number of hotspots listed")
+      ->check(CLI::Range(0, kMaxHotspots));
+  command
+      ->add_option("--bandwidth", figures.heatmap.density.kernel.bandwidth_m,
+                   "Density kernel radius (m), also the hotspot radius")
+      ->check(FiniteRange(kMinBandwidthM, kMaxBandwidthM));
+  command->add_option("--cell-size", figures.heatmap.cell_size_m, "Density cell size (m)")
+      ->check(FiniteRange(kMinCellSizeM, kMaxCellSizeM));
   command->callback(
       [arguments, &context] { context.run = [arguments] { RunReport(*arguments); }; });
 }

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "cli/option_checks.hpp"
 #include "cli/simulate_run.hpp"
 #include "core/utc_date.hpp"
 
@@ -47,8 +48,10 @@ void RegisterSimulateCommand(CLI::App& app, CliContext& context) {
       ->check(CLI::NonNegativeNumber);
   simulate->add_option("--route", record.route,
                        "Drive this route of the world's `routes` instead of `route`");
-  simulate->add_option("--duration", request->options.duration_s,
-                       "Stop after this many seconds of the route");
+  simulate
+      ->add_option("--duration", request->options.duration_s,
+                   "Stop after this many seconds of the route")
+      ->check(FiniteRange(0.1, kMaxDurationS));
   simulate->add_option("--start-time", request->start_time,
                        "When the run starts, YYYY-MM-DD[THH:MM[:SS]] UTC (default: the world's "
                        "start_time_s); a site's runs are told apart and ordered by it");
@@ -63,8 +66,10 @@ void RegisterSimulateCommand(CLI::App& app, CliContext& context) {
                    "Bag storage: sqlite3 (rosbag2's default before Iron) or mcap")
       ->check(CLI::IsMember({"sqlite3", "mcap"}))
       ->capture_default_str();
-  simulate->add_option("--contact-sheet", request->options.contact_sheet_png,
-                       "Also write a PNG of sampled colour, depth and laser frames of the bag");
+  simulate
+      ->add_option("--contact-sheet", request->options.contact_sheet_png,
+                   "Also write a PNG of sampled colour, depth and laser frames of the bag")
+      ->check(FileExtension({".png", ".jpg"}));
   simulate->callback([request, &context] {
     context.run = [request, &context] { RunSimulate(*request, context); };
   });

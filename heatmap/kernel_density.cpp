@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <vector>
 
@@ -75,6 +76,17 @@ Raster KernelSmooth(const Raster& raster, const KernelDensityOptions& options) {
   if (!(options.bandwidth_m > 0.0)) throw UsageError("kernel smoothing: bandwidth_m must be > 0");
   const GridGeometry& grid = raster.grid;
   const double h_cells = options.bandwidth_m / grid.cell_size_m;
+  // Each cell of the kernel's reach is one pass over the raster: beyond this the smoothing takes
+  // hours, and the reach would not fit an int.
+  constexpr double kMaxReachCells = 200;
+  if (!(h_cells <= kMaxReachCells)) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "kernel smoothing: a bandwidth of %g m is %g cells of %g m; at most %g (choose "
+                  "a larger cell size)",
+                  options.bandwidth_m, h_cells, grid.cell_size_m, kMaxReachCells);
+    throw UsageError(text);
+  }
   const int reach = static_cast<int>(std::floor(h_cells));
   struct Tap {
     int dx, dy;

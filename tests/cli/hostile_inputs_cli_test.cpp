@@ -98,6 +98,33 @@ TEST(HostileInputsCli, StartTimesOutsideTheBagsStampsAreRefused) {
   }
 }
 
+// Options that size a computation are bounded where they are read: a negative hotspot count was
+// an internal error, a 1e12 m bandwidth a segmentation fault, --duration inf a run that never
+// ended, a contact sheet of an unknown format an internal error after the whole simulation.
+TEST(HostileInputsCli, OptionsThatSizeAComputationAreBounded) {
+  TempDir dir;
+  const std::string site = Quote(dir / "site.gpkg");
+  ASSERT_EQ(RunLittermap("-q site init " + site + " --name p").exit_code, 0);
+  for (const char* command : {"heatmap", "report"}) {
+    const std::string out = " -o " + Quote(dir / command);
+    ExpectRefused(std::string(command) + " " + site + out + " --hotspots -1", 1,
+                  "--hotspots: Value -1 not in range 0 to 1000");
+    ExpectRefused(std::string(command) + " " + site + out + " --bandwidth 1e12", 1,
+                  "--bandwidth: must be a finite number from 0.1 to 100, not '1e12'");
+    ExpectRefused(std::string(command) + " " + site + out + " --bandwidth nan", 1,
+                  "--bandwidth: must be a finite number from 0.1 to 100, not 'nan'");
+    ExpectRefused(std::string(command) + " " + site + out + " --cell-size 1e-6", 1,
+                  "--cell-size: must be a finite number from 0.05 to 100, not '1e-6'");
+  }
+  const std::string simulate = "simulate " + Quote(test::SampleWorld()) + " -o " +
+                               Quote(dir / "bag") + " --truth " + Quote(dir / "truth");
+  ExpectRefused(simulate + " --duration inf", 1,
+                "--duration: must be a finite number from 0.1 to 86400, not 'inf'");
+  ExpectRefused(simulate + " --duration 2 --contact-sheet " + Quote(dir / "sheet.xyz"), 1,
+                "must end in .png, .jpg");
+  EXPECT_FALSE(std::filesystem::exists(dir / "bag"));
+}
+
 TEST(HostileInputsCli, PathsAtFaultAreBadInputNotInternalErrors) {
   TempDir dir;
   std::filesystem::create_directory_symlink(dir / "loop", dir / "loop");

@@ -108,5 +108,12 @@ TEST(KernelDensity, SmoothingKeepsAUniformRaster) {
   EXPECT_LT(smoothed.at(0, 0), 3.0f);  // outside the grid counts as unsurveyed
 }
 
+TEST(KernelDensity, AReachBeyondTwoHundredCellsIsRefusedNotOverflowed) {
+  const Raster uniform(Grid(30.0, 0.5), 3.0f);
+  EXPECT_NO_THROW(KernelSmooth(uniform, {100.0}));  // 200 cells
+  EXPECT_THROW(KernelSmooth(uniform, {100.5}), UsageError);
+  EXPECT_THROW(KernelSmooth(uniform, {1e12}), UsageError);  // was a reach past INT_MAX
+}
+
 }  // namespace
 }  // namespace littermap::heatmap
