@@ -6,13 +6,11 @@
 
 #include <jpeglib.h>
 
+#include "bag/image_size_limit.hpp"
 #include "core/error.hpp"
 
 namespace littermap::bag {
 namespace {
-
-// 2^26 pixels (8192 x 8192): far beyond any camera, far below memory trouble.
-constexpr std::uint64_t kMaxPixels = std::uint64_t{1} << 26;
 
 // libjpeg's error manager, extended with the first warning's text. Fatal errors come back as
 // exceptions thrown from error_exit through libjpeg's frames, as libpng's do in png16.cpp.
@@ -64,11 +62,7 @@ JpegImage DecodeJpeg(std::span<const std::uint8_t> bytes) {
   Decompressor jpeg;
   jpeg_mem_src(&jpeg.cinfo, bytes.data(), static_cast<unsigned long>(bytes.size()));
   jpeg_read_header(&jpeg.cinfo, TRUE);
-  if (static_cast<std::uint64_t>(jpeg.cinfo.image_width) * jpeg.cinfo.image_height > kMaxPixels) {
-    throw BadInputError("JPEG of " + std::to_string(jpeg.cinfo.image_width) + "x" +
-                        std::to_string(jpeg.cinfo.image_height) + " pixels is larger than " +
-                        std::to_string(kMaxPixels) + " pixels");
-  }
+  CheckImageSize("JPEG", jpeg.cinfo.image_width, jpeg.cinfo.image_height);
   jpeg.cinfo.out_color_space = JCS_EXT_BGR;  // libjpeg-turbo: grey and YCbCr both come out BGR
   jpeg_start_decompress(&jpeg.cinfo);
   JpegImage image;

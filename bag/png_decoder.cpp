@@ -7,13 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "bag/image_size_limit.hpp"
 #include "core/error.hpp"
 
 namespace littermap::bag {
 namespace {
-
-// 2^26 pixels (8192 x 8192): far beyond any camera, far below memory trouble.
-constexpr std::uint64_t kMaxPixels = std::uint64_t{1} << 26;
 
 struct Source {
   std::span<const std::uint8_t> bytes;
@@ -55,10 +53,7 @@ cv::Mat Decode(std::span<const std::uint8_t> bytes, Target target) {
   const png_uint_32 height = png_get_image_height(reader.png, reader.info);
   const int bit_depth = png_get_bit_depth(reader.png, reader.info);
   const int colour_type = png_get_color_type(reader.png, reader.info);
-  if (static_cast<std::uint64_t>(width) * height > kMaxPixels) {
-    throw BadInputError("PNG of " + std::to_string(width) + "x" + std::to_string(height) +
-                        " pixels is larger than " + std::to_string(kMaxPixels) + " pixels");
-  }
+  CheckImageSize("PNG", width, height);
   cv::Mat image;
   if (target == Target::kDepth) {
     if (bit_depth != 16 || colour_type != PNG_COLOR_TYPE_GRAY) {
