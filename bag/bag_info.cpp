@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "core/output_file.hpp"
+#include "core/yaml_fields.hpp"
 
 namespace littermap::bag {
 namespace {
@@ -89,10 +90,9 @@ const TopicInfo* BagInfo::FindTopic(const std::string& name) const {
 }
 
 BagInfo ReadMetadataYaml(const std::filesystem::path& path) {
+  const YAML::Node root = LoadYamlFile(path);
   try {
-    return ParseMetadata(YAML::LoadFile(path.string()), path.string());
-  } catch (const YAML::BadFile&) {
-    throw BadInputError(path.string() + ": cannot read file");
+    return ParseMetadata(root, path.string());
   } catch (const YAML::Exception& e) {
     throw BadInputError(path.string() + ": line " + std::to_string(e.mark.line + 1) +
                         ": malformed YAML: " + e.msg);

@@ -67,6 +67,18 @@ struct BagReader::Impl {
 void BagReader::Impl::LocateFiles(const std::filesystem::path& path) {
   std::error_code error;
   if (std::filesystem::is_regular_file(path, error)) {
+    // One file of a bag whose metadata.yaml lists it: the bag is its folder (read alone, its
+    // figures would look rebuilt, as after a crash).
+    const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : ".";
+    if (std::filesystem::is_regular_file(folder / "metadata.yaml", error)) {
+      const BagInfo listed = ReadMetadataYaml(folder / "metadata.yaml");
+      for (const BagFileInfo& file : listed.files) {
+        if (file.relative_path == path.filename().string()) {
+          LocateFiles(folder);
+          return;
+        }
+      }
+    }
     directory = path.parent_path();
     info.files.push_back({path.filename().string(), 0, 0, 0});
     rebuilt = true;

@@ -36,11 +36,26 @@ void Warn(const WarningCallback& warn, const std::string& warning) {
   if (warn) warn(warning);
 }
 
+// Seconds with all nine digits of the stamp, from the integer (a double rounds 1.7e18 ns to
+// 256 ns).
+std::string ExactSeconds(TimestampNs ns) {
+  const bool negative = ns < 0;
+  const unsigned long long magnitude =
+      negative ? 0ull - static_cast<unsigned long long>(ns) : static_cast<unsigned long long>(ns);
+  return Format("%s%llu.%09llu", negative ? "-" : "", magnitude / 1000000000ull,
+                magnitude % 1000000000ull);
+}
+
 }  // namespace
 
 BagSummary SummariseBag(const std::filesystem::path& bag, const BagSummaryOptions& options,
                         const ProgressCallback& progress, const WarningCallback& warn) {
   BagReader reader(bag);
+  std::error_code error;
+  if (std::filesystem::is_regular_file(bag, error) && !reader.metadata_rebuilt()) {
+    Warn(warn, bag.string() + ": one file of the bag " + reader.directory().string() +
+                   "; the whole bag is shown (name the folder to silence this)");
+  }
   if (reader.metadata_rebuilt()) {
     Warn(warn, bag.string() +
                    ": metadata.yaml is missing or out of date (was the recording interrupted?); "
@@ -120,9 +135,9 @@ std::string ToText(const BagSummary& summary) {
                                                 : std::string()) +
           "\n";
   text += Format("Duration:          %.3fs\n", ToSeconds(info.duration_ns));
-  text += "Start:             " + IsoTimeUtc(info.starting_time_ns) +
-          Format(" (%.9f)\n", ToSeconds(info.starting_time_ns));
-  text += "End:               " + IsoTimeUtc(end_ns) + Format(" (%.9f)\n", ToSeconds(end_ns));
+  text += "Start:             " + IsoTimeUtc(info.starting_time_ns) + " (" +
+          ExactSeconds(info.starting_time_ns) + ")\n";
+  text += "End:               " + IsoTimeUtc(end_ns) + " (" + ExactSeconds(end_ns) + ")\n";
   text += Format("Messages:          %llu\n", static_cast<unsigned long long>(info.message_count));
   text += "Topic information: ";
   for (std::size_t i = 0; i < info.topics.size(); ++i) {

@@ -12,6 +12,7 @@
 #include "bag/bag_schema.hpp"
 #include "bag/storage_file.hpp"
 #include "core/failure.hpp"
+#include "core/utf8.hpp"
 
 namespace littermap::bag {
 namespace {
@@ -140,6 +141,8 @@ BagWriter::BagWriter(const std::filesystem::path& directory, BagWriterOptions op
   if (options.commit_interval_ms <= 0) {
     throw UsageError("bag writer: commit_interval_ms must be positive");
   }
+  // Its name goes into the storage files' names and metadata.yaml, which readers take as UTF-8.
+  RequireUtf8(directory.string(), "the bag folder's name");
   impl_ = std::make_unique<Impl>(directory, options);
   impl_->committer = std::thread([impl = impl_.get()] { impl->CommitLoop(); });
 }

@@ -123,6 +123,13 @@ SensorRoles Resolve(const BagInfo& info, const std::map<std::string, std::string
     if (candidates.size() == 1) {
       topic = candidates.front();
       roles.found[role.name] = "by type";
+    } else if (default_topic != nullptr && strict &&
+               std::find(role.types.begin(), role.types.end(), default_topic->type) ==
+                   role.types.end()) {
+      // Read as the role's type, its messages would decode as garbage or not at all.
+      throw BadInputError("topic '" + topic + "' has type " + default_topic->type + ", not " +
+                          Join(role.types) + ": name the " + role.name + " topic with --topic " +
+                          role.name + "=TOPIC");
     } else {
       roles.found[role.name] = "missing";
     }

@@ -22,14 +22,7 @@ Eigen::Isometry3d ReadSensorMount(YamlFields& robot, const char* sensor) {
 }  // namespace
 
 RobotDescription ReadRobotDescription(const std::filesystem::path& path) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path.string());
-  } catch (const YAML::BadFile&) {
-    throw BadInputError(path.string() + ": cannot read the robot description");
-  } catch (const YAML::Exception& error) {
-    throw BadInputError(path.string() + ": not valid YAML: " + error.what());
-  }
+  const YAML::Node root = LoadYamlFile(path);
   if (!root.IsMap())
     throw BadInputError(path.string() + ": the robot description is not a mapping");
   YamlFields robot(root, path, "");

@@ -105,7 +105,8 @@ void RegisterCaptureCommand(CLI::App& app, CliContext& context) {
   capture
       ->add_option("--min-free-disk-mb", live.min_free_disk_mb,
                    "Stop cleanly when the disk has less than this left")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(FiniteRange(0, 1e9));
   capture->add_flag("--list-cameras", arguments->list_cameras, "List the OpenNI2 devices and exit");
   capture
       ->add_option("--storage", simulate.record.bag.storage,
@@ -114,12 +115,11 @@ void RegisterCaptureCommand(CLI::App& app, CliContext& context) {
       ->capture_default_str();
   capture->add_option("--truth", simulate.truth_dir,
                       "sim: also write the ground truth into this directory");
-  capture->add_option("--seed", simulate.record.seed, "sim: random seed")
-      ->check(CLI::NonNegativeNumber);
+  capture->add_option("--seed", simulate.record.seed, "sim: random seed")->check(Seed());
   capture
       ->add_option("--run-seed", simulate.record.run_seed,
                    "sim: seed of sensor noise only (the same park)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(Seed());
   capture->add_option("--route", simulate.record.route, "sim: a named route of the world");
   capture
       ->add_option("--contact-sheet", simulate.contact_sheet_png,

@@ -6,6 +6,7 @@
 
 #include "bag/bag_convert.hpp"
 #include "cli/cli_context.hpp"
+#include "cli/option_checks.hpp"
 
 namespace littermap::cli {
 
@@ -19,7 +20,7 @@ void RegisterConvertCommand(CLI::App& app, CliContext& context) {
       app, "convert", "Copy a bag into MCAP or sqlite3 storage, losslessly (or some topics only)");
   command->add_option("BAG", arguments->input, "Bag directory (or one .db3/.mcap file)")
       ->required()
-      ->check(CLI::ExistingPath);
+      ->check(ExistingInput(InputKind::kFileOrFolder));
   command->add_option("-o,--output", arguments->output, "Bag directory to write")->required();
   command->add_option("--storage", arguments->options.storage, "Storage of the new bag")
       ->check(CLI::IsMember({"mcap", "sqlite3"}))

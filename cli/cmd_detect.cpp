@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/cli_context.hpp"
+#include "cli/option_checks.hpp"
 #include "cli/sensor_arguments.hpp"
 #include "detect/debug_frames.hpp"
 #include "run/detect_run.hpp"
@@ -41,10 +42,10 @@ void RegisterDetectCommand(CLI::App& app, CliContext& context) {
       "and RUN_DIR/items.csv (fused items)");
   command->add_option("BAG", arguments->bag, "Run bag directory")
       ->required()
-      ->check(CLI::ExistingPath);
+      ->check(ExistingInput(InputKind::kFileOrFolder));
   command->add_option("--run", arguments->run_dir, "Run directory of `littermap reconstruct`")
       ->required()
-      ->check(CLI::ExistingDirectory);
+      ->check(ExistingInput(InputKind::kFolder));
   command->add_option("-o,--output", arguments->options.output_dir,
                       "Where to write (default: the run directory)");
   command->add_flag("--force", arguments->options.force_output,
@@ -53,20 +54,23 @@ void RegisterDetectCommand(CLI::App& app, CliContext& context) {
       ->add_option("--trajectory", arguments->options.trajectory,
                    "TUM trajectory to place objects with (default RUN_DIR/trajectory.tum; "
                    "e.g. the simulator's truth)")
-      ->check(CLI::ExistingFile);
+      ->check(ExistingInput(InputKind::kFile));
   command->add_option("--model", arguments->options.model, "Classifier model of `littermap train`")
       ->capture_default_str()
-      ->check(CLI::ExistingFile);
+      ->check(ExistingInput(InputKind::kFile));
   command->add_option("--every", arguments->options.objects.every, "Process every n-th frame")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(WholeNumber<std::size_t>(1, kMaxFrameStep));
   command
       ->add_option("--min-views", arguments->options.fusion.min_views,
                    "Frames an item must be seen in to be kept")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(WholeNumber(1, 1000));
   command
       ->add_option("--association-radius", arguments->options.fusion.association_radius_m,
                    "Sightings this close (m) are one item")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(FiniteRange(0.01, 10));
   command->add_option("--debug-frames", arguments->debug_frames,
                       "Write a segmentation picture of every processed frame here");
   AddSensorOptions(command, arguments->sensors);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cli/cli_context.hpp"
+#include "cli/option_checks.hpp"
 #include "eval/trajectory_metrics.hpp"
 
 namespace littermap::cli {
@@ -37,20 +38,22 @@ void RegisterEvalCommands(CLI::App& app, CliContext& context) {
       "benchmark scripts compute them");
   trajectory->add_option("EST", arguments->estimate, "Estimated trajectory (TUM format)")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(ExistingInput(InputKind::kFile));
   trajectory->add_option("REF", arguments->reference, "Reference trajectory (TUM format)")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(ExistingInput(InputKind::kFile));
   trajectory->add_flag("--json", arguments->json,
                        "JSON output (ate_rmse_m, rpe_trans_mean_m, rpe_rot_mean_deg, ...)");
   trajectory
       ->add_option("--max-time-difference", arguments->options.max_time_difference_s,
                    "Largest stamp difference of an associated pair, seconds")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(FiniteRange(1e-6, 3600));
   trajectory
       ->add_option("--rpe-delta", arguments->options.rpe_delta_m,
                    "Distance travelled between the poses of an RPE pair, metres")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(FiniteRange(0.01, 1e5));
   trajectory->callback(
       [arguments, &context] { context.run = [arguments] { RunTrajectory(*arguments); }; });
 }

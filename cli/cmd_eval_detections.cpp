@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli/cli_context.hpp"
+#include "cli/option_checks.hpp"
 #include "core/object_classes.hpp"
 #include "eval/detection_evaluation.hpp"
 #include "run/items_file.hpp"
@@ -63,11 +64,13 @@ void RegisterEvalDetectionsCommand(CLI::App& app, CliContext& context) {
       ->add_option("--min-pixels", arguments->options.min_visible_pixels,
                    "Pixels an object must cover in some masked frame to count as truth")
       ->capture_default_str()
+      ->check(WholeNumber<std::size_t>(0, 100000000))
       ->needs(visible);
   detections
       ->add_option("--match-radius", arguments->options.match_radius_m,
                    "Largest distance of a matched item and truth object, metres")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(FiniteRange(0.01, 100));
   detections
       ->add_option("--align", arguments->align,
                    "EST.tum REF.tum: carry the items into the truth's frame by the rigid alignment "

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cli/cli_context.hpp"
+#include "cli/option_checks.hpp"
 #include "reconstruct/trajectory_map_sharpness.hpp"
 
 namespace littermap::cli {
@@ -40,22 +41,25 @@ void RegisterEvalMapCommand(CLI::App& app, CliContext& context) {
       "echoes occupy (fewer is sharper; needs no reference, so it also judges one)");
   map->add_option("BAG", arguments->bag, "Run bag with the laser scans")
       ->required()
-      ->check(CLI::ExistingPath);
+      ->check(ExistingInput(InputKind::kFileOrFolder));
   map->add_option("TRAJECTORY", arguments->trajectories,
                   "Trajectories of base_link (TUM format), e.g. RUN_DIR/trajectory.tum and a "
                   "reference; the table compares each with the first")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(ExistingInput(InputKind::kFile));
   map->add_option("--scan-topic", arguments->options.scan_topic, "LaserScan topic")
       ->capture_default_str();
   map->add_option("--cell-size", arguments->options.map.cell_size_m, "Grid cell size, metres")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(FiniteRange(kMinCellSizeM / 5, kMaxCellSizeM));
   map->add_option("--max-range", arguments->options.map.max_range_m,
                   "Echoes further than this are not drawn, metres")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(FiniteRange(0.1, 1000));
   map->add_option("--max-time-difference", arguments->options.map.max_time_difference_s,
                   "Largest stamp difference between a scan and its pose, seconds")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(FiniteRange(0, 3600));
   map->add_flag("--json", arguments->json,
                 "JSON output (per trajectory: occupied_cells, echoes_drawn, scans_drawn, scans)");
   map->callback([arguments, &context] {

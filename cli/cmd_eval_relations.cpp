@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cli/cli_context.hpp"
+#include "cli/option_checks.hpp"
 #include "core/error.hpp"
 #include "eval/pose_relations.hpp"
 #include "importers/carmen_log.hpp"
@@ -62,11 +63,13 @@ void RegisterEvalRelationsCommand(CLI::App& app, CliContext& context) {
   command
       ->add_option("--max-stamp-difference", arguments->options.max_stamp_difference_s,
                    "Largest difference of a relation stamp and its scan's, seconds")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(FiniteRange(0, 3600));
   command
       ->add_option("--large-error", arguments->options.large_error_m,
                    "Relations with a larger translational error are counted, metres")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(FiniteRange(0, 1e5));
   command->add_flag("--json", arguments->json,
                     "JSON output (used, metric_evaluator.trans_m.mean, cartographer, ...)");
   command->callback([arguments, &context, scanmap, log] {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cli/cli_context.hpp"
+#include "cli/option_checks.hpp"
 #include "detect/segmentation_evaluation.hpp"
 
 namespace littermap::cli {
@@ -36,14 +37,15 @@ void RegisterEvalSegmentationCommand(CLI::App& app, CliContext& context) {
       "(objects in view and within the depth range; 'objects' counts object-frame pairs)");
   command->add_option("BAG", arguments->bag, "Run bag of `littermap simulate`")
       ->required()
-      ->check(CLI::ExistingPath);
+      ->check(ExistingInput(InputKind::kFileOrFolder));
   command->add_option("TRUTH_DIR", arguments->truth_dir, "Its ground truth")
       ->required()
-      ->check(CLI::ExistingDirectory);
+      ->check(ExistingInput(InputKind::kFolder));
   command
       ->add_option("--min-pixels", arguments->options.min_depth_pixels,
                    "Score objects showing at least this many pixels with depth")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(WholeNumber(0, 100000000));
   command->add_flag("--json", arguments->json,
                     "JSON: {CLASS: {objects, mean_iou, found_share}}, CLASS 'all' too");
   command->callback([arguments, &context] {

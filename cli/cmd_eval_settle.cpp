@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cli/cli_context.hpp"
+#include "cli/option_checks.hpp"
 #include "core/error.hpp"
 #include "reconstruct/trajectory_settling.hpp"
 
@@ -43,10 +44,10 @@ void RegisterEvalSettleCommand(CLI::App& app, CliContext& context) {
       "move is reported as ATE and RPE (needs no reference, so it also judges one)");
   settle->add_option("BAG", arguments->bag, "Run bag with the laser scans")
       ->required()
-      ->check(CLI::ExistingPath);
+      ->check(ExistingInput(InputKind::kFileOrFolder));
   settle->add_option("TRAJECTORY", arguments->trajectory, "Trajectory of base_link (TUM format)")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(ExistingInput(InputKind::kFile));
   settle->add_option("-o,--output", arguments->options.output,
                      "Write the settled poses (TUM format) of the scans aligned (one per 0.5 m or "
                      "17 deg of motion)");
@@ -55,7 +56,8 @@ void RegisterEvalSettleCommand(CLI::App& app, CliContext& context) {
   settle
       ->add_option("--max-time-difference", arguments->options.max_time_difference_s,
                    "Largest stamp difference between a scan and its pose, seconds")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(FiniteRange(0, 3600));
   settle->add_flag("--json", arguments->json,
                    "JSON output (ate_rmse_m, rpe_trans_mean_m, rpe_rot_mean_deg of the move, "
                    "scans_aligned, ...)");

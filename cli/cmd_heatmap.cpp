@@ -50,8 +50,10 @@ void RegisterHeatmapCommand(CLI::App& app, CliContext& context) {
   command
       ->add_option("--bandwidth", options.density.kernel.bandwidth_m, "Quartic kernel radius (m)")
       ->check(FiniteRange(kMinBandwidthM, kMaxBandwidthM));
-  command->add_option("--min-effort", options.density.min_effort_surveys,
-                      "Cells surveyed fewer times are nodata");
+  command
+      ->add_option("--min-effort", options.density.min_effort_surveys,
+                   "Cells surveyed fewer times are nodata")
+      ->check(FiniteRange(0.001, 1e6));
   command
       ->add_option("--hotspots", arguments->options.hotspots.max_count, "Number of hotspots listed")
       ->check(CLI::Range(0, kMaxHotspots));

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/cli_context.hpp"
+#include "cli/option_checks.hpp"
 #include "core/error.hpp"
 #include "importers/import_summary.hpp"
 
@@ -72,7 +73,7 @@ void RegisterCarmen(CLI::App& import, CliContext& context) {
       "Import a CARMEN laser log (plain or .gz): /scan, /odom and /tf_static (base_link -> laser)");
   carmen->add_option("LOG", arguments->input, "CARMEN log file, plain text or gzip")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(ExistingInput(InputKind::kFile));
   AddOutputs(*carmen, *arguments,
              "Also write the log's (corrected) robot poses, one per scan, as a TUM "
              "trajectory file");
@@ -80,7 +81,7 @@ void RegisterCarmen(CLI::App& import, CliContext& context) {
       ->add_option("--odometry-noise", arguments->carmen.odometry_noise_seed,
                    "Replace the odometry by the reference corrupted with seeded Gaussian noise "
                    "(5 % of distance for dx, dy; 5 % of turn + 1 deg/m + 0.1 deg for dtheta)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(Seed());
   OnRun(*carmen, arguments, context, RunCarmen);
 }
 
@@ -92,7 +93,7 @@ void RegisterTum(CLI::App& import, CliContext& context) {
       "depth in mm and camera_info");
   tum->add_option("DIR", arguments->input, "TUM RGB-D sequence directory")
       ->required()
-      ->check(CLI::ExistingDirectory);
+      ->check(ExistingInput(InputKind::kFolder));
   AddOutputs(*tum, *arguments, "Also write groundtruth.txt's poses as a TUM trajectory file");
   tum->add_option("--camera", arguments->camera,
                   "TUM camera calibration fr1|fr2|fr3 (default: from the directory name, e.g. "

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli/cli_context.hpp"
+#include "cli/option_checks.hpp"
 #include "site/run_directory_ingest.hpp"
 
 namespace littermap::cli {
@@ -55,26 +56,40 @@ void RegisterIngestCommand(CLI::App& app, CliContext& context) {
       ->add_option("--initial", arguments->initial,
                    "Where the run starts in the site frame, X Y DEG (default: the dock, 0 0 0); "
                    "its map is matched from there")
-      ->expected(3);
+      ->expected(3)
+      ->check(FiniteRange(-kMaxSiteCoordinateM, kMaxSiteCoordinateM));
   ingest
       ->add_option("--transform", arguments->transform,
                    "Place the run's frame at X Y DEG in the site frame by hand, without matching")
-      ->expected(3);
+      ->expected(3)
+      ->check(FiniteRange(-kMaxSiteCoordinateM, kMaxSiteCoordinateM));
   ingest->option_defaults()->always_capture_default();  // shown in --help
-  ingest->add_option("--search-window", arguments->options.placement.registration.window_m,
-                     "How far (m) from --initial the run's map is searched for on the site map");
-  ingest->add_option("--min-matching-ratio",
-                     arguments->options.placement.registration.min_matching_ratio,
-                     "Share of the run's map that must land on the site map");
+  ingest
+      ->add_option("--search-window", arguments->options.placement.registration.window_m,
+                   "How far (m) from --initial the run's map is searched for on the site map")
+      ->check(FiniteRange(0.1, 1000));
+  ingest
+      ->add_option("--min-matching-ratio",
+                   arguments->options.placement.registration.min_matching_ratio,
+                   "Share of the run's map that must land on the site map")
+      ->check(FiniteRange(0, 1));
   auto& options = arguments->options.ingest;
-  ingest->add_option("--same-item-radius", options.same_item_radius_m,
-                     "An item of the same class this close (m) to a known one is that item");
-  ingest->add_option("--detection-range", options.camera.max_detection_range_m,
-                     "Camera detection range on the ground (m)");
-  ingest->add_option("--camera-hfov", options.camera.horizontal_fov_deg,
-                     "Camera horizontal field of view (deg)");
-  ingest->add_option("--coverage-cell", options.coverage_cell_size_m,
-                     "Cell size (m) of the stored camera coverage");
+  ingest
+      ->add_option("--same-item-radius", options.same_item_radius_m,
+                   "A detection this close (m) to a known item is that item, whatever its class")
+      ->check(FiniteRange(0.01, 100));
+  ingest
+      ->add_option("--detection-range", options.camera.max_detection_range_m,
+                   "Camera detection range on the ground (m)")
+      ->check(FiniteRange(0.1, 100));
+  ingest
+      ->add_option("--camera-hfov", options.camera.horizontal_fov_deg,
+                   "Camera horizontal field of view (deg)")
+      ->check(FiniteRange(1, 179));
+  ingest
+      ->add_option("--coverage-cell", options.coverage_cell_size_m,
+                   "Cell size (m) of the stored camera coverage")
+      ->check(FiniteRange(kMinCellSizeM, kMaxCellSizeM));
   ingest->callback([arguments, &context] {
     context.run = [arguments, &context] { RunIngest(*arguments, context); };
   });

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/cli_context.hpp"
+#include "cli/option_checks.hpp"
 #include "cli/sensor_arguments.hpp"
 #include "run/reconstruct_run.hpp"
 
@@ -47,7 +48,7 @@ void RegisterReconstructCommand(CLI::App& app, CliContext& context) {
       "routines.csv, quality.json");
   command->add_option("BAG", arguments->bag, "Run bag directory")
       ->required()
-      ->check(CLI::ExistingPath);
+      ->check(ExistingInput(InputKind::kFileOrFolder));
   command->add_option("-o,--output", arguments->run_dir, "Run directory to write")->required();
   command->add_flag("--force", arguments->options.force_output,
                     "Write into an output folder that holds files littermap does not write there");
@@ -59,7 +60,7 @@ void RegisterReconstructCommand(CLI::App& app, CliContext& context) {
   command
       ->add_option("--options", arguments->options.options_file,
                    "YAML file of tuning options (unknown keys are errors)")
-      ->check(CLI::ExistingFile);
+      ->check(ExistingInput(InputKind::kFile));
   command->add_flag("--no-loop-closure{false}", options.slam.loop_closure,
                     "Track and map without loop closure (for comparisons)");
   command->add_flag("--no-rgbd{false}", options.rgbd,

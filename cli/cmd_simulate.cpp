@@ -31,21 +31,24 @@ void RegisterSimulateCommand(CLI::App& app, CliContext& context) {
       "/tf_static) and its ground truth");
   simulate->add_option("WORLD", request->world, "World description (YAML)")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(ExistingInput(InputKind::kFile));
   simulate->add_option("-o,--output", request->bag, "Bag directory to create")->required();
   simulate
       ->add_option("--truth", request->options.truth_dir,
                    "Directory for trajectory.tum, litter.csv, natural.csv, world.json, masks/")
       ->required();
+  simulate->add_flag("--force", record.force_truth,
+                     "Write the truth into a --truth folder that holds files littermap does not "
+                     "write there");
   simulate
       ->add_option("--seed", record.seed,
                    "Random seed of the world and the run (overrides the world's seed)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(Seed());
   simulate
       ->add_option("--run-seed", record.run_seed,
                    "Random seed of sensor noise, odometry drift and timing only: the same "
                    "park, another run")
-      ->check(CLI::NonNegativeNumber);
+      ->check(Seed());
   simulate->add_option("--route", record.route,
                        "Drive this route of the world's `routes` instead of `route`");
   simulate
@@ -60,7 +63,7 @@ void RegisterSimulateCommand(CLI::App& app, CliContext& context) {
                    "Survey the park on this day: the world's litter changed day by day "
                    "(litter.daily_pickup_fraction picked up, litter.daily_new dropped); at most "
                    "3650")
-      ->check(CLI::Range(0, sim::kMaxLitterDay));
+      ->check(WholeNumber(0, sim::kMaxLitterDay));
   simulate
       ->add_option("--storage", record.bag.storage,
                    "Bag storage: sqlite3 (rosbag2's default before Iron) or mcap")

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/cli_context.hpp"
+#include "cli/option_checks.hpp"
 #include "cli/sensor_arguments.hpp"
 #include "reports/survey.hpp"
 #include "reports/survey_summary.hpp"
@@ -51,8 +52,7 @@ void RegisterSurveyCommand(CLI::App& app, CliContext& context) {
   command
       ->add_option("--every", options->detect.objects.every,
                    "Detect in every n-th camera frame only")
-      ->type_name("INT")
-      ->check(CLI::PositiveNumber);
+      ->check(WholeNumber<std::size_t>(1, kMaxFrameStep));
   command->add_flag("--force", options->force, "Redo every stage, even if up to date");
   AddSensorOptions(command, *sensors);
   command->callback([options, sensors, &context] {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cli/cli_context.hpp"
+#include "cli/option_checks.hpp"
 #include "detect/classifier_training.hpp"
 #include "detect/sample_collection.hpp"
 #include "run/detect_run.hpp"
@@ -59,19 +60,21 @@ void RegisterTrainCommands(CLI::App& app, CliContext& context) {
       "Cut labelled object crops for training from a simulated run (labels from its truth)");
   command->add_option("BAG", samples->bag, "Run bag of `littermap simulate`")
       ->required()
-      ->check(CLI::ExistingPath);
+      ->check(ExistingInput(InputKind::kFileOrFolder));
   command->add_option("--truth", samples->truth_dir, "The run's TRUTH_DIR")
       ->required()
-      ->check(CLI::ExistingDirectory);
+      ->check(ExistingInput(InputKind::kFolder));
   command->add_option("-o,--output", samples->output, "Sample directory to write")->required();
   command->add_option("--every", samples->options.objects.every, "Process every n-th frame")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(WholeNumber<std::size_t>(1, kMaxFrameStep));
   command->add_option("--debug-frames", samples->options.debug_frames,
                       "Write a segmentation picture of every processed frame here");
   command
       ->add_option("--label-radius", samples->options.label_radius_m,
                    "An object within this distance (m) of a truth object takes its class")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(FiniteRange(0.01, 10));
   command->callback([samples, &context] {
     context.run = [samples, &context] { RunSamples(*samples, context); };
   });
@@ -81,18 +84,21 @@ void RegisterTrainCommands(CLI::App& app, CliContext& context) {
       context.AddCommand(app, "train", "Train the litter classifier from labelled object samples");
   command->add_option("SAMPLES", train->samples, "Sample directories (labels.csv + crops)")
       ->required()
-      ->check(CLI::ExistingDirectory);
+      ->check(ExistingInput(InputKind::kFolder));
   command->add_option("-o,--output", train->output, "Model file to write (.yml.gz)")->required();
   command
       ->add_option("--validate", train->validate,
                    "Score every classifier of the thesis, alone and combined, on these samples")
-      ->check(CLI::ExistingDirectory);
-  command->add_option("--trees", train->options.trees, "Random forest size")->capture_default_str();
+      ->check(ExistingInput(InputKind::kFolder));
+  command->add_option("--trees", train->options.trees, "Random forest size")
+      ->capture_default_str()
+      ->check(WholeNumber(1, 10000));
   command->add_option("--clusters", train->options.clusters_per_class, "K clusters per class")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(WholeNumber(1, 100));
   command->add_option("--seed", train->options.seed, "Random seed")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(Seed());
   command->callback([train, &context] { context.run = [train] { RunTrain(*train); }; });
 }
 

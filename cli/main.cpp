@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/cli_context.hpp"
+#include "cli/command_names.hpp"
 #include "core/failure.hpp"
 #include "littermap_version.hpp"
 
@@ -64,10 +65,13 @@ int main(int argc, char** argv) {
   littermap::cli::RegisterSurveyCommand(app, context);
 
   try {
+    littermap::cli::CheckCommandNames(app, argc, argv);
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);  // prints help, version or the usage error
     return code == 0 ? 0 : kExitUsage;
+  } catch (const std::exception& e) {  // an input checked at the door (cli/option_checks.hpp)
+    return Fail(context, static_cast<int>(littermap::KindOf(e)), e.what());
   }
 
   try {

@@ -9,7 +9,13 @@
 namespace littermap {
 namespace {
 
+// The file's name, checked: "." or a folder cannot be replaced by a file (rename would fail
+// only after the work, and with EBUSY for "."), nor can "" be written.
 std::filesystem::path TemporaryOf(const std::filesystem::path& file) {
+  std::error_code error;
+  if (file.empty() || std::filesystem::is_directory(file, error)) {
+    throw FileFailure(file, "cannot write a file", EISDIR);
+  }
   return file.string() + ".tmp";
 }
 

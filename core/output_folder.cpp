@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/failure.hpp"
+#include "core/utf8.hpp"
 
 namespace littermap {
 namespace {
@@ -20,6 +21,7 @@ bool Own(const std::string& name, const std::vector<std::string>& own) {
 }  // namespace
 
 void PrepareOutputFolder(const std::filesystem::path& folder, const OutputFolderCheck& check) {
+  RequireUtf8(folder.string(), check.option);
   const std::string where = check.option + " " + folder.string();
   std::error_code error;
   const std::filesystem::file_status status = std::filesystem::status(folder, error);

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cctype>
+#include <cerrno>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -160,9 +161,12 @@ std::string FileUri(const std::filesystem::path& file) {
 
 // A database that can only be read as immutable: its folder cannot take a -shm file, and no
 // -wal file holds changes that reading without it would miss.
+std::filesystem::path FolderOf(const std::filesystem::path& file) {
+  return file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+}
+
 bool ReadableOnlyAsImmutable(const std::filesystem::path& file) {
-  const std::filesystem::path folder =
-      file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+  const std::filesystem::path folder = FolderOf(file);
   std::error_code error;
   const std::filesystem::path wal = file.string() + "-wal";
   const bool pending_wal =
@@ -192,11 +196,19 @@ SqliteDatabase::SqliteDatabase(const std::filesystem::path& file, Mode mode) : f
   }
   const int code = sqlite3_open_v2(name.c_str(), &db_, flags, nullptr);
   if (code != SQLITE_OK) {
-    const std::string message = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(code);
+    std::string message = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(code);
     // Why the file could not be opened (no such folder: the path; no permission: the machine).
-    const int system_errno = db_ ? sqlite3_system_errno(db_) : 0;
+    int system_errno = db_ ? sqlite3_system_errno(db_) : 0;
+    // Refused a new file, SQLite retries read-only and reports that attempt's ENOENT: the
+    // folder's own answer (a read-only file system, no permission) is the cause.
+    std::error_code ignored;
+    if (mode == Mode::kCreate && !std::filesystem::exists(file, ignored) &&
+        access(FolderOf(file).c_str(), W_OK) != 0) {
+      system_errno = errno;
+    }
     sqlite3_close(db_);
     db_ = nullptr;
+    if (system_errno != 0) message += std::string(" (") + std::strerror(system_errno) + ")";
     throw SqliteError(file.string() + ": cannot open database: " + message, code,
                       system_errno != 0 ? KindOfErrno(system_errno) : SqliteErrorKind(code));
   }

@@ -3,8 +3,20 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/text_file.hpp"
+#include "core/utf8.hpp"
 
 namespace littermap {
+
+YAML::Node LoadYamlFile(const std::filesystem::path& path) {
+  const std::string text = ReadTextFile(path);
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw BadInputError(path.string() + ": line " + std::to_string(e.mark.line + 1) +
+                        ": not valid YAML: " + e.msg);
+  }
+}
 
 YamlFields::YamlFields(const YAML::Node& node, const std::filesystem::path& file,
                        std::string prefix)
@@ -80,6 +92,7 @@ void YamlFields::Read(const char* key, std::string& value) {
   if (!node) return;
   if (!node.IsScalar()) Fail(key, "expected a string");
   value = node.as<std::string>();
+  if (!IsUtf8(value)) Fail(key, "is not valid UTF-8");
 }
 
 void YamlFields::Read(const char* key, std::vector<Eigen::Vector2d>& points) {

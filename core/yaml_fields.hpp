@@ -13,6 +13,10 @@
 
 namespace littermap {
 
+// A YAML file (core/text_file.hpp's limits). Throws BadInputError "FILE: line N: not valid YAML:
+// ..." or the file's read failure.
+YAML::Node LoadYamlFile(const std::filesystem::path& path);
+
 class YamlFields {
  public:
   // `node` must be a mapping (or null: no keys); `prefix` is its dotted key ("robot.laser").

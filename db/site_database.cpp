@@ -40,6 +40,7 @@ void ValidateOptions(const std::filesystem::path& file, const SiteOptions& optio
     throw UsageError("site init: --origin and --rotation place the site in a CRS; give --crs too");
   }
   RequireUtf8(options.name, "site init: --name");
+  RequireUtf8(file.string(), "site init: SITE");
   if (!std::isfinite(options.rotation_deg) || std::abs(options.rotation_deg) > 360.0) {
     throw UsageError("site init: --rotation must be a number of degrees from -360 to 360");
   }

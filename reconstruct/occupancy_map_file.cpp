@@ -8,6 +8,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "core/error.hpp"
+#include "core/yaml_fields.hpp"
 
 namespace littermap::reconstruct {
 namespace {
@@ -44,12 +45,7 @@ int HeaderNumber(std::istream& in, const std::filesystem::path& file, const char
 }  // namespace
 
 OccupancyImage ReadOccupancyMap(const std::filesystem::path& yaml_path) {
-  YAML::Node yaml;
-  try {
-    yaml = YAML::LoadFile(yaml_path.string());
-  } catch (const YAML::Exception& e) {
-    throw BadInputError(yaml_path.string() + ": " + e.what());
-  }
+  const YAML::Node yaml = LoadYamlFile(yaml_path);
   const auto field = [&](const char* name) {
     const YAML::Node node = yaml[name];
     if (!node) throw BadInputError(yaml_path.string() + ": no '" + name + "'");
@@ -77,11 +73,19 @@ OccupancyImage ReadOccupancyMap(const std::filesystem::path& yaml_path) {
   } catch (const YAML::Exception& e) {
     throw BadInputError(yaml_path.string() + ": " + e.what());
   }
-  if (!(map.resolution_m > 0))
-    throw BadInputError(yaml_path.string() + ": 'resolution' must be > 0");
+  if (!(map.resolution_m > 0) || !std::isfinite(map.resolution_m))
+    throw BadInputError(yaml_path.string() + ": 'resolution' must be a finite number > 0");
+  if (!std::isfinite(map.origin_x_m) || !std::isfinite(map.origin_y_m))
+    throw BadInputError(yaml_path.string() + ": 'origin' must be finite numbers");
   if (image.is_relative()) image = yaml_path.parent_path() / image;
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(image, error)) {
+    throw BadInputError(image.string() + ": the map image named by " + yaml_path.string() +
+                        " is not a regular file");
+  }
+  const std::uintmax_t file_bytes = std::filesystem::file_size(image, error);
   std::ifstream pgm(image, std::ios::binary);
-  if (!pgm)
+  if (!pgm || error)
     throw BadInputError(image.string() + ": cannot open the map image named by " +
                         yaml_path.string());
   if (HeaderToken(pgm) != "P5") throw BadInputError(image.string() + ": not a binary PGM (P5)");
@@ -90,7 +94,16 @@ OccupancyImage ReadOccupancyMap(const std::filesystem::path& yaml_path) {
   if (HeaderNumber(pgm, image, "maxval") != 255) {
     throw BadInputError(image.string() + ": only 8-bit PGM (maxval 255) is read");
   }
-  map.pixels.resize(static_cast<std::size_t>(map.width) * static_cast<std::size_t>(map.height));
+  // The header's size is checked against the file before memory is taken for it.
+  const std::uintmax_t pixels =
+      static_cast<std::uintmax_t>(map.width) * static_cast<std::uintmax_t>(map.height);
+  const std::streamoff header_bytes = pgm.tellg();
+  if (header_bytes < 0 || pixels > file_bytes - static_cast<std::uintmax_t>(header_bytes)) {
+    throw BadInputError(image.string() + ": truncated (the header says " +
+                        std::to_string(map.width) + "x" + std::to_string(map.height) +
+                        " pixels, the file has " + std::to_string(file_bytes) + " bytes)");
+  }
+  map.pixels.resize(static_cast<std::size_t>(pixels));
   pgm.read(reinterpret_cast<char*>(map.pixels.data()),
            static_cast<std::streamsize>(map.pixels.size()));
   if (pgm.gcount() != static_cast<std::streamsize>(map.pixels.size())) {

@@ -1,21 +1,39 @@
 #include "reconstruct/options_file.hpp"
 
+#include <cmath>
 #include <functional>
 #include <map>
+#include <type_traits>
+#include <vector>
 
 #include <yaml-cpp/yaml.h>
 
 #include "core/error.hpp"
+#include "core/yaml_fields.hpp"
 
 namespace littermap::reconstruct {
 namespace {
 
 using Setter = std::function<void(const YAML::Node&, ReconstructionOptions*)>;
 
+// The node's value; numbers must be finite (YAML reads .nan and .inf as numbers).
+template <typename T>
+T Value(const YAML::Node& node) {
+  const T value = node.as<T>();
+  if constexpr (std::is_floating_point_v<T>) {
+    if (!std::isfinite(value)) throw BadInputError("must be a finite number");
+  } else if constexpr (std::is_same_v<T, std::vector<double>>) {
+    for (const double element : value) {
+      if (!std::isfinite(element)) throw BadInputError("must be finite numbers");
+    }
+  }
+  return value;
+}
+
 template <typename T, typename Field>
 Setter Set(Field field) {
   return [field](const YAML::Node& node, ReconstructionOptions* options) {
-    field(*options) = node.as<T>();
+    field(*options) = Value<T>(node);
   };
 }
 
@@ -23,37 +41,36 @@ Setter Set(Field field) {
 template <typename T>
 Setter SetAligners(T RgbdAlignerOptions::*field) {
   return [field](const YAML::Node& node, ReconstructionOptions* options) {
-    options->rgbd_tracker.aligner.*field = options->visual_odometry.aligner.*field = node.as<T>();
+    options->rgbd_tracker.aligner.*field = options->visual_odometry.aligner.*field = Value<T>(node);
   };
 }
 
-// The value a name stands for, or BadInputError naming the option and the names it takes.
+// The value a name stands for, or BadInputError listing the names it takes.
 template <typename Enum>
-Enum Choice(const char* key, const std::map<std::string, Enum>& names, const YAML::Node& node) {
+Enum Choice(const std::map<std::string, Enum>& names, const YAML::Node& node) {
   const auto found = names.find(node.as<std::string>());
   if (found == names.end()) {
     std::string known;
     for (const auto& [name, value] : names) known += (known.empty() ? "" : ", ") + name;
-    throw BadInputError(std::string("option '") + key + "' must be one of " + known);
+    throw BadInputError("must be one of " + known);
   }
   return found->second;
 }
 
 // A named choice.
 template <typename Enum, typename Field>
-Setter SetChoice(const char* key, std::map<std::string, Enum> names, Field field) {
-  return [key, names, field](const YAML::Node& node, ReconstructionOptions* options) {
-    field(*options) = Choice(key, names, node);
+Setter SetChoice(std::map<std::string, Enum> names, Field field) {
+  return [names, field](const YAML::Node& node, ReconstructionOptions* options) {
+    field(*options) = Choice(names, node);
   };
 }
 
 // A named choice, for both RGB-D aligners.
 template <typename Enum>
-Setter SetAligners(const char* key, std::map<std::string, Enum> names,
-                   Enum RgbdAlignerOptions::*field) {
-  return [key, names, field](const YAML::Node& node, ReconstructionOptions* options) {
+Setter SetAligners(std::map<std::string, Enum> names, Enum RgbdAlignerOptions::*field) {
+  return [names, field](const YAML::Node& node, ReconstructionOptions* options) {
     options->rgbd_tracker.aligner.*field = options->visual_odometry.aligner.*field =
-                                               Choice(key, names, node);
+                                               Choice(names, node);
   };
 }
 
@@ -64,7 +81,6 @@ const std::map<std::string, Setter>& Setters() {
       {"scan_max_range_m", Set<double>([](O& o) -> double& { return o.slam.points.max_range_m; })},
       {"scan_voxel_size_m", Set<double>([](O& o) -> double& { return o.slam.scan_voxel_size_m; })},
       {"moving_echoes", SetChoice<MovingEchoMode>(
-                            "moving_echoes",
                             {{"auto", MovingEchoMode::kAuto},
                              {"on", MovingEchoMode::kOn},
                              {"true", MovingEchoMode::kOn},
@@ -133,14 +149,12 @@ const std::map<std::string, Setter>& Setters() {
       {"max_large_turn_correction_rad",
        Set<double>([](O& o) -> double& { return o.slam.tracker.max_large_turn_correction_rad; })},
       {"rgbd", Set<bool>([](O& o) -> bool& { return o.rgbd; })},
-      {"rgbd_features", SetAligners<RgbdFeatures>("rgbd_features",
-                                                  {{"orb", RgbdFeatures::kOrb},
+      {"rgbd_features", SetAligners<RgbdFeatures>({{"orb", RgbdFeatures::kOrb},
                                                    {"sift", RgbdFeatures::kSift},
                                                    {"akaze", RgbdFeatures::kAkaze}},
                                                   &RgbdAlignerOptions::features)},
       {"rgbd_rejection",
-       SetAligners<PairRejection>("rgbd_rejection",
-                                  {{"histogram", PairRejection::kCircularHistogram},
+       SetAligners<PairRejection>({{"histogram", PairRejection::kCircularHistogram},
                                    {"ransac", PairRejection::kRansac},
                                    {"none", PairRejection::kNone}},
                                   &RgbdAlignerOptions::rejection)},
@@ -196,8 +210,7 @@ const std::map<std::string, Setter>& Setters() {
       {"max_loop_residual_m",
        Set<double>([](O& o) -> double& { return o.slam.max_loop_residual_m; })},
       {"scan_alignment",
-       SetChoice<AlignmentMode>("scan_alignment",
-                                {{"auto", AlignmentMode::kAuto},
+       SetChoice<AlignmentMode>({{"auto", AlignmentMode::kAuto},
                                  {"on", AlignmentMode::kOn},
                                  {"off", AlignmentMode::kOff}},
                                 [](O& o) -> AlignmentMode& { return o.slam.alignment_mode; })},
@@ -229,14 +242,7 @@ std::vector<std::string> OptionsFileKeys() {
 }
 
 void ApplyOptionsFile(const std::filesystem::path& path, ReconstructionOptions* options) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path.string());
-  } catch (const YAML::BadFile&) {
-    throw UsageError(path.string() + ": cannot read the options file");
-  } catch (const YAML::Exception& e) {
-    throw BadInputError(path.string() + ": not YAML: " + e.what());
-  }
+  const YAML::Node root = LoadYamlFile(path);
   if (root.IsNull()) return;
   if (!root.IsMap()) throw BadInputError(path.string() + ": expected a map of option: value");
   for (const auto& entry : root) {
@@ -250,10 +256,15 @@ void ApplyOptionsFile(const std::filesystem::path& path, ReconstructionOptions* 
     } catch (const YAML::Exception&) {
       throw BadInputError(path.string() + ": option '" + key + "' has a value of the wrong type");
     } catch (const BadInputError& e) {
-      throw BadInputError(path.string() + ": " + e.what());
+      throw BadInputError(path.string() + ": option '" + key + "' " + e.what());
     }
   }
-  options->Validate();
+  // Values each valid alone may still not go together (a range below a minimum range).
+  try {
+    options->Validate();
+  } catch (const UsageError& e) {
+    throw BadInputError(path.string() + ": " + e.what());
+  }
 }
 
 }  // namespace littermap::reconstruct

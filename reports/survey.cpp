@@ -1,5 +1,6 @@
 #include "reports/survey.hpp"
 
+#include <cerrno>
 #include <exception>
 #include <utility>
 #include <vector>
@@ -143,8 +144,10 @@ void RunStage(const Survey& survey, const Stage& stage, const std::string& label
 }  // namespace
 
 SurveyResult RunSurvey(const SurveyOptions& options, const SurveyCallbacks& callbacks) {
-  if (!fs::is_directory(options.bag)) {
-    throw UsageError(options.bag.string() + ": not a run bag directory");
+  std::error_code error;
+  if (!fs::exists(options.bag, error)) throw FileFailure(options.bag, "cannot read", ENOENT);
+  if (!fs::is_directory(options.bag, error)) {
+    throw BadInputError(options.bag.string() + ": not a run bag directory");
   }
   Survey survey(options, callbacks);
   survey.name = run::RunName(options.name, options.bag);

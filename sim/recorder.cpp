@@ -13,6 +13,7 @@
 #include "bag/sensor_messages.hpp"
 #include "bag/topics.hpp"
 #include "core/error.hpp"
+#include "core/output_folder.hpp"
 #include "core/time.hpp"
 #include "sim/ground_truth.hpp"
 #include "sim/instance_masks.hpp"
@@ -189,6 +190,12 @@ SimRecordResult RecordSimulation(const WorldSpec& world_spec, const std::filesys
   bag::OutputGuard guard;
   guard.Add(bag_path);
   guard.Add(truth_dir);
+  if (!truth_dir.empty()) {
+    PrepareOutputFolder(truth_dir, {"--truth",
+                                    {"trajectory.tum", "litter.csv", "natural.csv", "world.json",
+                                     "masks", "map.pgm", "map.yaml"},
+                                    options.force_truth});
+  }
   bag::BagWriter writer(bag_path, options.bag);
   SimRecordResult result;
   const auto clock_start = Clock::now();

@@ -28,7 +28,8 @@ struct SimRecordOptions {
   int litter_day = 0;                     // the litter of this day (WorldSpec::litter_day)
   double max_duration_s = std::numeric_limits<double>::infinity();
   bag::BagWriterOptions bag;
-  int png_compression = 1;  // zlib level of the depth PNGs (bag/image_codec.hpp)
+  int png_compression = 1;   // zlib level of the depth PNGs (bag/image_codec.hpp)
+  bool force_truth = false;  // write the truth into a folder that holds other files too
 };
 
 struct SimRecordResult {

@@ -1,10 +1,8 @@
 #include "sim/world_spec.hpp"
 
-#include <fstream>
-#include <sstream>
-
 #include "core/error.hpp"
 #include "core/object_classes.hpp"
+#include "core/text_file.hpp"
 #include "core/yaml_fields.hpp"
 
 namespace littermap::sim {
@@ -232,11 +230,7 @@ const RouteSpec& WorldSpec::DrivenRoute() const {
 }
 
 WorldSpec LoadWorldSpec(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw BadInputError(path.string() + ": cannot open world file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return ParseWorldSpec(text.str(), path);
+  return ParseWorldSpec(ReadTextFile(path), path);
 }
 
 }  // namespace littermap::sim

@@ -1,14 +1,14 @@
 #include "site/run_directory_ingest.hpp"
 
+#include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "bag/tum_trajectory.hpp"
 #include "core/error.hpp"
 #include "core/pose3.hpp"
+#include "core/text_file.hpp"
 #include "reconstruct/map_registration.hpp"
 #include "run/run_digest.hpp"
 #include "run/run_files.hpp"
@@ -24,17 +24,30 @@ std::vector<PlanarPose> PlanarTrajectory(const std::vector<StampedPose>& poses) 
   return planar;
 }
 
+// A survey covers a park, not a country: a position this far from the run's start is a unit or
+// format error, and a coverage grid over it would not fit in memory.
+constexpr double kMaxRunExtentM = 20000;
+
+void CheckExtent(const std::filesystem::path& file, double x_m, double y_m, double from_x_m,
+                 double from_y_m) {
+  if (!(std::hypot(x_m - from_x_m, y_m - from_y_m) <= kMaxRunExtentM)) {
+    char where[96];
+    std::snprintf(where, sizeof where, "(%g, %g)", x_m, y_m);
+    throw BadInputError(file.string() + ": a position at " + where +
+                        " m lies more than 20 km from the run's start; a survey's trajectory "
+                        "and items are in metres of the run's frame");
+  }
+}
+
 // reconstruct's quality.json, checked to be JSON; empty when the run has none (a simulator truth
 // directory).
 std::string ReadQuality(const std::filesystem::path& file) {
   if (!std::filesystem::exists(file)) return {};
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  if (!in || !nlohmann::json::accept(text.str())) {
+  std::string text = ReadTextFile(file);
+  if (!nlohmann::json::accept(text)) {
     throw BadInputError(file.string() + ": not a JSON file (reconstruct writes it; rerun it)");
   }
-  return text.str();
+  return text;
 }
 
 void CheckNameFree(db::SiteDatabase& site, const std::string& name, const std::string& digest) {
@@ -96,6 +109,15 @@ RunDirectoryIngestResult IngestRunDirectory(db::SiteDatabase& site,
     run.end_time_s = ToSeconds(poses.back().stamp_ns);
   }
   run.items = ReadRunItems(files.items);
+  if (!run.T_site_base.empty()) {
+    const PlanarPose& start = run.T_site_base.front();
+    for (const PlanarPose& pose : run.T_site_base) {
+      CheckExtent(files.trajectory, pose.x_m, pose.y_m, start.x_m, start.y_m);
+    }
+    for (const RunItem& item : run.items) {
+      CheckExtent(files.items, item.xy.x, item.xy.y, start.x_m, start.y_m);
+    }
+  }
   const run::RunFiles run_files(run_dir);
   run.reconstruction_quality = ReadQuality(run_files.quality());
   result.ingest = PlaceAndIngest(site, run_files.map_yaml(), options, run, &result.notes);

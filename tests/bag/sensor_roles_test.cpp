@@ -82,6 +82,16 @@ TEST(SensorRoles, InfoShowsAnAmbiguousRoleInsteadOfStopping) {
   EXPECT_THROW(TopicOf(roles, "lidar"), UsageError);
 }
 
+// A topic with the role's default name but another type is not read as the role's (an IMU read
+// as laser scans decoded to nothing and reconstructed zero poses without a word).
+TEST(SensorRoles, ADefaultNameOfAnotherTypeIsBadInput) {
+  const BagInfo info = Bag({{"/scan", "sensor_msgs/msg/Imu"}, {"/odom", "nav_msgs/msg/Odometry"}});
+  test::ExpectBadInput([&] { ResolveSensorRoles(info); },
+                       "topic '/scan' has type sensor_msgs/msg/Imu, not sensor_msgs/msg/LaserScan: "
+                       "name the scan topic with --topic scan=TOPIC");
+  EXPECT_EQ(FindSensorRoles(info).found.at("scan"), "missing") << "info shows it, not stops";
+}
+
 TEST(SensorRoles, WrongChoicesAreUsageErrors) {
   const BagInfo info =
       Bag({{"/scan_front", "sensor_msgs/msg/LaserScan"}, {"/odom", "nav_msgs/msg/Odometry"}});

@@ -62,7 +62,15 @@ TEST(RobotDescription, ErrorsNameTheFileAndKey) {
   expect_error("laser:\n  mount: {z: 0.3}\n", "laser.mount.z");
   expect_error("lidar:\n  mount: {}\n", "lidar");
   expect_error("laser: [1, 2\n", "not valid YAML");
-  EXPECT_THROW(ReadRobotDescription(dir / "missing.yaml"), BadInputError);
+  try {
+    ReadRobotDescription(dir / "missing.yaml");
+    ADD_FAILURE() << "a missing file was read";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::kBadInput) << e.what();
+    EXPECT_NE(std::string(e.what()).find("missing.yaml: cannot read: No such file"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

@@ -76,7 +76,8 @@ TEST(ImportCli, UsageErrorsExitOne) {
   test::TempDir dir;
   const auto log = kDatasets / "carmen" / "orebro-corrected.log.gz";
   EXPECT_EQ(RunLittermap("import carmen " + Quote(log)).exit_code, 1) << "no -o";
-  EXPECT_EQ(RunLittermap("import carmen " + Quote(dir / "nope.log") + " -o x").exit_code, 1);
+  EXPECT_EQ(RunLittermap("import carmen " + Quote(dir / "nope.log") + " -o x").exit_code, 2)
+      << "a missing input is bad input, as everywhere";
   EXPECT_EQ(RunLittermap("import carmen " + Quote(log) + " -o " + Quote(dir / "bag") +
                          " --odometry-noise banana")
                 .exit_code,

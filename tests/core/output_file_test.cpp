@@ -99,5 +99,27 @@ TEST(OutputFile, AFileThatCannotBeCreatedIsNamed) {
   }
 }
 
+// A folder (or ".") named where a file belongs fails before anything is written, as bad input,
+// instead of at the final rename (EBUSY for ".", an environment fault).
+TEST(OutputFile, AFolderCannotBecomeAFile) {
+  test::TempDir dir;
+  for (const fs::path& folder : {dir.path(), fs::path(".")}) {
+    try {
+      OutputFile out(folder);
+      ADD_FAILURE() << folder << ": no error";
+    } catch (const Error& error) {
+      EXPECT_EQ(error.kind(), ErrorKind::kBadInput) << error.what();
+      EXPECT_EQ(std::string(error.what()),
+                folder.string() + ": cannot write a file: Is a directory");
+    }
+  }
+  try {
+    OutputFile::ByName(dir.path());
+    ADD_FAILURE() << "ByName: no error";
+  } catch (const Error& error) {
+    EXPECT_EQ(error.kind(), ErrorKind::kBadInput) << error.what();
+  }
+}
+
 }  // namespace
 }  // namespace littermap

@@ -62,5 +62,17 @@ TEST(OutputFolder, APathThatCannotBeAFolderIsBadInput) {
   }
 }
 
+// Its name goes into run names, site records and JSON: not UTF-8, it is refused at the door.
+TEST(OutputFolder, ANameThatIsNotUtf8IsBadInput) {
+  TempDir dir;
+  try {
+    PrepareOutputFolder(dir / "run\xff", {"-o", {}, false});
+    ADD_FAILURE() << "accepted";
+  } catch (const BadInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("-o is not valid UTF-8"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "run\xff"));
+}
+
 }  // namespace
 }  // namespace littermap

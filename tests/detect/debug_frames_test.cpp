@@ -43,8 +43,8 @@ TEST(DebugFrames, AFileThatCannotBeWrittenIsNamed) {
     ADD_FAILURE() << "no error";
   } catch (const Error& error) {  // a folder where the file belongs: the path is at fault
     EXPECT_EQ(error.kind(), ErrorKind::kBadInput);
-    EXPECT_EQ(std::string(error.what()),
-              (dir / "frames" / "frame_000001.png").string() + ": cannot write: Is a directory");
+    EXPECT_EQ(std::string(error.what()), (dir / "frames" / "frame_000001.png").string() +
+                                             ": cannot write a file: Is a directory");
   }
 }
 

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "core/error.hpp"
+#include "support/expect_bad_input.hpp"
 #include "support/temp_dir.hpp"
 
 namespace littermap::reconstruct {
@@ -94,7 +95,15 @@ TEST(OptionsFile, BadKeysAndValuesNameTheFileAndKey) {
 TEST(OptionsFile, OutOfRangeValuesFailValidation) {
   test::TempDir dir;
   ReconstructionOptions options;
-  EXPECT_THROW(ApplyOptionsFile(Write(dir, "rgbd_min_confidence: 2\n"), &options), UsageError);
+  const std::filesystem::path file = Write(dir, "rgbd_min_confidence: 2\n");
+  test::ExpectBadInput([&] { ApplyOptionsFile(file, &options); }, file.string() + ": ");
+  const std::filesystem::path nan = Write(dir, "max_correction_m: .nan\n");
+  test::ExpectBadInput([&] { ApplyOptionsFile(nan, &options); },
+                       nan.string() + ": option 'max_correction_m' must be a finite number");
+  const std::filesystem::path inf =
+      Write(dir, "alignment_max_correspondence_distances_m: [1, .inf]\n");
+  test::ExpectBadInput([&] { ApplyOptionsFile(inf, &options); },
+                       "option 'alignment_max_correspondence_distances_m' must be finite numbers");
 }
 
 }  // namespace

@@ -174,7 +174,7 @@ TEST_F(SurveyTest, WantsABagDirectory) {
   try {
     RunSurvey(options_, callbacks_);
     ADD_FAILURE() << "a file was taken for a bag directory";
-  } catch (const UsageError& e) {
+  } catch (const BadInputError& e) {
     EXPECT_EQ(std::string(e.what()), options_.bag.string() + ": not a run bag directory");
   }
   EXPECT_TRUE(printed_.empty());
