@@ -55,6 +55,10 @@ void RegisterHeatmapCommand(CLI::App& app, CliContext& context) {
                    "Cells surveyed fewer times are nodata")
       ->check(FiniteRange(0.001, 1e6));
   command
+      ->add_option("--hotspot-min-items", arguments->options.hotspots.min_items,
+                   "Distinct items a place needs to be called a hotspot")
+      ->check(WholeNumber(1, 1000));
+  command
       ->add_option("--hotspots", arguments->options.hotspots.max_count, "Number of hotspots listed")
       ->check(CLI::Range(0, kMaxHotspots));
   command->callback([arguments, &context] {

@@ -46,6 +46,10 @@ void RegisterReportCommand(CLI::App& app, CliContext& context) {
   command->add_option("--hotspots", figures.max_hotspots, "Number of hotspots listed")
       ->check(CLI::Range(0, kMaxHotspots));
   command
+      ->add_option("--hotspot-min-items", figures.hotspot_min_items,
+                   "Distinct items a place needs to be called a hotspot")
+      ->check(WholeNumber(1, 1000));
+  command
       ->add_option("--bandwidth", figures.heatmap.density.kernel.bandwidth_m,
                    "Density kernel radius (m), also the hotspot radius")
       ->check(FiniteRange(kMinBandwidthM, kMaxBandwidthM));

@@ -53,6 +53,11 @@ void RegisterSurveyCommand(CLI::App& app, CliContext& context) {
       ->add_option("--every", options->detect.objects.every,
                    "Detect in every n-th camera frame only")
       ->check(WholeNumber<std::size_t>(1, kMaxFrameStep));
+  command
+      ->add_option("--hotspot-min-items", options->hotspot_min_items,
+                   "Distinct items a place needs to be called a hotspot")
+      ->capture_default_str()
+      ->check(WholeNumber(1, 1000));
   command->add_flag("--force", options->force, "Redo every stage, even if up to date");
   AddSensorOptions(command, *sensors);
   command->callback([options, sensors, &context] {

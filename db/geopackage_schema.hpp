@@ -12,7 +12,9 @@
 namespace littermap::db {
 
 constexpr std::int32_t kGeoPackageApplicationId = 0x47504B47;  // "GPKG"
-constexpr std::int32_t kGeoPackageUserVersion = 10400;         // version 1.4.0
+// 1.3.0: littermap uses nothing of 1.4, and GDAL 3.6 (Debian 12's, under its QGIS) warns on
+// every file that declares a version above 1.3.
+constexpr std::int32_t kGeoPackageUserVersion = 10300;
 
 // Sets application_id and user_version and creates gpkg_spatial_ref_sys (with the required
 // rows), gpkg_contents and gpkg_geometry_columns. Call inside a fresh, empty database.

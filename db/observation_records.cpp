@@ -128,14 +128,17 @@ std::vector<CoverageRecord> SiteDatabase::Coverages() {
   return coverages;
 }
 
-void SiteDatabase::ReplaceHotspots(const std::vector<HotspotRecord>& hotspots) {
-  database_.Execute("DELETE FROM hotspots");
-  database_.Execute(
-      "UPDATE gpkg_contents SET min_x = NULL, min_y = NULL, max_x = NULL, max_y = NULL "
-      "WHERE table_name = 'hotspots'");
+void SiteDatabase::ReplaceHotspots(const HotspotFilter& filter,
+                                   const std::vector<HotspotRecord>& hotspots) {
+  SqliteStatement remove = database_.Prepare(
+      "DELETE FROM hotspots WHERE filter_class = ? AND filter_from_utc = ? AND filter_to_utc = ?");
+  remove.Bind(1, filter.class_name);
+  remove.Bind(2, filter.from_utc);
+  remove.Bind(3, filter.to_utc);
+  remove.Run();
   SqliteStatement insert = database_.Prepare(
-      "INSERT INTO hotspots (geom, rank, site_x_m, site_y_m, density_per_100m2, dominant_class) "
-      "VALUES (?, ?, ?, ?, ?, ?)");
+      "INSERT INTO hotspots (geom, rank, site_x_m, site_y_m, density_per_100m2, dominant_class, "
+      "filter_class, filter_from_utc, filter_to_utc) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
   for (const HotspotRecord& hotspot : hotspots) {
     const PointXY crs = site_.frame.ToCrs(hotspot.site_xy);
     const std::vector<std::uint8_t> blob = EncodePoint(crs, site_.frame.srs_id);
@@ -144,8 +147,23 @@ void SiteDatabase::ReplaceHotspots(const std::vector<HotspotRecord>& hotspots) {
     insert.BindReal(3, hotspot.site_xy.x);
     insert.BindReal(4, hotspot.site_xy.y);
     insert.BindReal(5, hotspot.density_per_100m2);
-    insert.Bind(6, hotspot.dominant_class);
+    if (hotspot.dominant_class.empty()) {
+      insert.BindNull(6);
+    } else {
+      insert.Bind(6, hotspot.dominant_class);
+    }
+    insert.Bind(7, filter.class_name);
+    insert.Bind(8, filter.from_utc);
+    insert.Bind(9, filter.to_utc);
     insert.Run();
+  }
+  // The layer's extent: of every set it holds now.
+  database_.Execute(
+      "UPDATE gpkg_contents SET min_x = NULL, min_y = NULL, max_x = NULL, max_y = NULL "
+      "WHERE table_name = 'hotspots'");
+  SqliteStatement rows = database_.Prepare("SELECT site_x_m, site_y_m FROM hotspots");
+  while (rows.Step()) {
+    const PointXY crs = site_.frame.ToCrs({rows.ColumnDouble(0), rows.ColumnDouble(1)});
     ExtendContentsBounds(database_, "hotspots", {crs.x, crs.x, crs.y, crs.y});
   }
 }

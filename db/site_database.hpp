@@ -96,6 +96,13 @@ struct CoverageRecord {
   bool Covers(const PointXY& crs) const;
 };
 
+// Which items a set of hotspots was computed from ('' for any class, date or period).
+struct HotspotFilter {
+  std::string class_name;
+  std::string from_utc;  // runs starting on or after, as the user gave it
+  std::string to_utc;    // runs starting before
+};
+
 struct HotspotRecord {
   int rank = 0;
   PointXY site_xy;
@@ -156,8 +163,9 @@ class SiteDatabase {
   std::vector<ItemRecord> ItemsSeenBy(const std::vector<std::int64_t>& run_ids);
   void AddCoverage(const CoverageRecord& coverage);
   std::vector<CoverageRecord> Coverages();
-  // Replaces the hotspots table's rows (they are recomputed from all runs each time).
-  void ReplaceHotspots(const std::vector<HotspotRecord>& hotspots);
+  // Replaces the hotspots computed with this filter (recomputed from the runs each time); the
+  // sets of other filters stay.
+  void ReplaceHotspots(const HotspotFilter& filter, const std::vector<HotspotRecord>& hotspots);
 
  private:
   explicit SiteDatabase(const std::filesystem::path& file, SqliteDatabase::Mode mode);

@@ -126,11 +126,29 @@ constexpr const char* kVersion3 = R"sql(
 ALTER TABLE runs ADD COLUMN reconstruction_quality TEXT;
 )sql";
 
+// Version 4: GIS layers that say what they show. Each run track carries its run's name and start
+// (UTC); hotspots keep one set per heatmap filter (class, from, to; '' is "any"), so a heatmap
+// of one class no longer replaces the site's hotspots of all litter. The file declares
+// GeoPackage 1.3 (sites made before declared 1.4, which GDAL 3.6 warns about).
+constexpr const char* kVersion4 = R"sql(
+ALTER TABLE run_tracks ADD COLUMN run_name TEXT;
+ALTER TABLE run_tracks ADD COLUMN start_utc TEXT;
+UPDATE run_tracks SET
+  run_name = (SELECT name FROM runs WHERE runs.run_id = run_tracks.run_id),
+  start_utc = (SELECT strftime('%Y-%m-%dT%H:%M:%SZ', start_time_s, 'unixepoch') FROM runs
+               WHERE runs.run_id = run_tracks.run_id);
+ALTER TABLE hotspots ADD COLUMN filter_class TEXT NOT NULL DEFAULT '';
+ALTER TABLE hotspots ADD COLUMN filter_from_utc TEXT NOT NULL DEFAULT '';
+ALTER TABLE hotspots ADD COLUMN filter_to_utc TEXT NOT NULL DEFAULT '';
+PRAGMA user_version = 10300;
+)sql";
+
 const std::vector<Migration>& Migrations() {
   static const std::vector<Migration> migrations = {
       {1, "sites, runs, run_tracks, litter_items, detections, coverage, hotspots", kVersion1},
       {2, "site_map: the occupancy map later runs are registered onto", kVersion2},
       {3, "runs.reconstruction_quality: reconstruct's quality.json of each run", kVersion3},
+      {4, "run_tracks.run_name/start_utc; hotspots per filter; GeoPackage 1.3", kVersion4},
   };
   return migrations;
 }

@@ -134,7 +134,9 @@ void SiteDatabase::AddRunTrack(std::int64_t run_id, std::span<const PointXY> sit
   for (const PointXY& p : site_points) crs_points.push_back(site_.frame.ToCrs(p));
   const std::vector<std::uint8_t> blob = EncodeLineString(crs_points, site_.frame.srs_id);
   SqliteStatement insert = database_.Prepare(
-      "INSERT INTO run_tracks (geom, run_id, pose_count, length_m) VALUES (?, ?, ?, ?)");
+      "INSERT INTO run_tracks (geom, run_id, pose_count, length_m, run_name, start_utc) "
+      "SELECT ?1, ?2, ?3, ?4, name, strftime('%Y-%m-%dT%H:%M:%SZ', start_time_s, 'unixepoch') "
+      "FROM runs WHERE run_id = ?2");
   insert.BindBlob(1, blob);
   insert.Bind(2, run_id);
   insert.Bind(3, static_cast<std::int64_t>(site_points.size()));

@@ -145,16 +145,22 @@ void CheckSiteOrigin(int epsg_code, double easting_m, double northing_m) {
   }
 }
 
+std::string LocalCrsName(const std::string& site_name) {
+  return "littermap site frame: " + site_name;
+}
+
 SpatialRefSys LocalSpatialRefSys(const std::string& site_name) {
   SpatialRefSys srs;
-  srs.srs_name = "littermap site frame: " + site_name;
+  srs.srs_name = LocalCrsName(site_name);
   srs.srs_id = kLocalSiteSrsId;
   srs.organization = "littermap";
   srs.organization_coordsys_id = kLocalSiteSrsId;
-  srs.definition =
-      "LOCAL_CS[\"littermap site frame\",LOCAL_DATUM[\"robot site map\",0],"
-      "UNIT[\"metre\",1,AUTHORITY[\"EPSG\",\"9001\"]],AXIS[\"Easting\",EAST],"
-      "AXIS[\"Northing\",NORTH]]";
+  std::string wkt_name;  // WKT doubles a quote inside a name
+  for (const char c : srs.srs_name) wkt_name += c == '"' ? std::string("\"\"") : std::string(1, c);
+  srs.definition = "LOCAL_CS[\"" + wkt_name +
+                   "\",LOCAL_DATUM[\"robot site map\",0],"
+                   "UNIT[\"metre\",1,AUTHORITY[\"EPSG\",\"9001\"]],AXIS[\"Easting\",EAST],"
+                   "AXIS[\"Northing\",NORTH]]";
   srs.description = "local engineering frame of the robot's site map, metres, not georeferenced";
   return srs;
 }

@@ -42,4 +42,8 @@ void CheckSiteOrigin(int epsg_code, double easting_m, double northing_m);
 // A right-handed metric frame (x east, y north) with no link to the Earth.
 SpatialRefSys LocalSpatialRefSys(const std::string& site_name);
 
+// The one name of a site's local engineering CRS, in the GeoPackage (srs_name and its WKT) and
+// in the GeoTIFFs, so that a GIS shows the layers and rasters in one CRS.
+std::string LocalCrsName(const std::string& site_name);
+
 }  // namespace littermap::db

@@ -107,7 +107,7 @@ void SetGeoKeys(TIFF* tif, const GridGeometry& grid, const GeoTiffOptions& optio
   } else {
     GTIFKeySet(gtif, ProjectedCSTypeGeoKey, TYPE_SHORT, 1, KvUserDefined);
     GTIFKeySet(gtif, ProjLinearUnitsGeoKey, TYPE_SHORT, 1, Linear_Meter);
-    GTIFKeySet(gtif, PCSCitationGeoKey, TYPE_ASCII, 0, "littermap local site frame");
+    GTIFKeySet(gtif, PCSCitationGeoKey, TYPE_ASCII, 0, options.local_crs_name.c_str());
   }
   GTIFWriteKeys(gtif);
   GTIFFree(gtif);

@@ -19,6 +19,7 @@ struct GeoTiffOptions {
   float nodata = -9999.0f;  // cells with this value are "no data"
   int epsg_code = 0;        // projected CRS of the grid; 0: a local metric frame
   std::string citation;     // GTCitationGeoKey, e.g. "littermap density, items per 100 m2"
+  std::string local_crs_name = "littermap site frame";  // the local frame's PCSCitationGeoKey
 };
 
 struct GeoTiffResult {

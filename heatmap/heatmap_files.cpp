@@ -6,6 +6,8 @@
 #include <utility>
 
 #include "core/output_folder.hpp"
+#include "core/time.hpp"
+#include "db/spatial_ref_sys.hpp"
 #include "heatmap/density_preview.hpp"
 #include "heatmap/exports.hpp"
 #include "heatmap/geotiff_writer.hpp"
@@ -14,10 +16,11 @@
 namespace littermap::heatmap {
 namespace {
 
-void WriteRaster(const std::filesystem::path& file, const Raster& raster,
-                 const db::SiteFrame& frame, const std::string& citation, float nodata) {
+void WriteRaster(const std::filesystem::path& file, const Raster& raster, const db::SiteInfo& site,
+                 const std::string& citation, float nodata) {
   GeoTiffOptions options;
-  options.epsg_code = frame.epsg_code;
+  options.epsg_code = site.frame.epsg_code;
+  options.local_crs_name = db::LocalCrsName(site.name);
   options.citation = citation;
   options.nodata = nodata;
   WriteCloudOptimizedGeoTiff(file, raster, options);
@@ -37,9 +40,10 @@ HeatmapFilesResult WriteHeatmapFiles(db::SiteDatabase& site, const std::filesyst
   const SiteHeatmap map = ComputeSiteHeatmap(site, options.map);
 
   const float nodata = options.map.density.nodata;
-  WriteRaster(dir / "density.tif", map.density.density, frame,
+  WriteRaster(dir / "density.tif", map.density.density, site.site(),
               "littermap litter density, items per 100 m2 per survey", nodata);
-  WriteRaster(dir / "effort.tif", map.effort, frame, "littermap survey effort, surveys", -1.0f);
+  WriteRaster(dir / "effort.tif", map.effort, site.site(), "littermap survey effort, surveys",
+              -1.0f);
   DensityPreviewOptions preview;
   preview.title =
       site.site().name + ": litter density (" + std::to_string(map.run_ids.size()) +
@@ -55,12 +59,19 @@ HeatmapFilesResult WriteHeatmapFiles(db::SiteDatabase& site, const std::filesyst
 
   std::vector<ClassifiedPoint> points;
   for (const auto& item : map.items) points.push_back({frame.ToCrs(item.site_xy), item.class_name});
-  const auto hotspots = FindHotspots(map.density.density, nodata, points, options.hotspots);
+  options.hotspots.min_effort_surveys = HotspotSupport(map.run_ids.size()).min_effort_surveys;
+  const auto hotspots =
+      FindHotspots(map.density.density, nodata, points, options.hotspots, &map.effort);
   std::vector<db::HotspotRecord> records;
   for (const auto& h : hotspots) {
     records.push_back({h.rank, frame.FromCrs(h.crs), h.density_per_100m2, h.dominant_class});
   }
-  site.InTransaction([&] { site.ReplaceHotspots(records); });
+  const auto utc = [](const std::optional<double>& time_s) {
+    return time_s ? FormatUtc(*time_s, "%Y-%m-%dT%H:%M:%SZ") : std::string();
+  };
+  const db::HotspotFilter filter{options.map.class_name, utc(options.map.from_time_s),
+                                 utc(options.map.to_time_s)};
+  site.InTransaction([&] { site.ReplaceHotspots(filter, records); });
 
   HeatmapFilesResult result;
   std::unique_ptr<Wgs84Transform> wgs84;
@@ -92,11 +103,13 @@ HeatmapFilesResult WriteHeatmapFiles(const std::filesystem::path& site_file,
 
 std::string HeatmapSummary(const HeatmapFilesResult& result, const std::filesystem::path& dir) {
   char figures[256];
+  const auto s = [](std::size_t n) { return n == 1 ? "" : "s"; };
   std::snprintf(figures, sizeof figures,
-                "%zu runs, %zu items (%zu detections), %.0f m2 surveyed; peak density %.2f items "
-                "per 100 m2 per survey; %zu hotspots; written to ",
-                result.runs, result.items, result.detections, result.surveyed_area_m2,
-                result.max_density_per_100m2, result.hotspots);
+                "%zu run%s, %zu item%s (%zu detection%s), %.0f m2 surveyed; peak density %.2f "
+                "items per 100 m2 per survey; %zu hotspot%s; written to ",
+                result.runs, s(result.runs), result.items, s(result.items), result.detections,
+                s(result.detections), result.surveyed_area_m2, result.max_density_per_100m2,
+                result.hotspots, s(result.hotspots));
   return figures + dir.string();
 }
 

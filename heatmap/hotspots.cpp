@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <numbers>
+#include <numeric>
+
+#include <opencv2/imgproc.hpp>
 
 namespace littermap::heatmap {
 namespace {
@@ -22,51 +25,127 @@ bool IsLocalMaximum(const Raster& density, int column, int row, int radius, floa
   return true;
 }
 
-void Classify(Hotspot& hotspot, std::span<const ClassifiedPoint> items, double radius_m) {
-  std::map<std::string, int> counts;
-  for (const ClassifiedPoint& item : items) {
-    if (std::hypot(item.crs.x - hotspot.crs.x, item.crs.y - hotspot.crs.y) <= radius_m) {
-      ++counts[item.class_name];
-      ++hotspot.items_nearby;
+struct Peak {
+  db::PointXY crs;
+  double density_per_100m2 = 0.0;
+};
+
+double Distance(const db::PointXY& a, const db::PointXY& b) {
+  return std::hypot(a.x - b.x, a.y - b.y);
+}
+
+// Peaks joined when their kernels overlap, through any chain of peaks (union-find).
+std::vector<std::vector<std::size_t>> MergeOverlapping(const std::vector<Peak>& peaks,
+                                                       double reach_m) {
+  std::vector<std::size_t> parent(peaks.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto root = [&](std::size_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (std::size_t i = 0; i < peaks.size(); ++i) {
+    for (std::size_t j = i + 1; j < peaks.size(); ++j) {
+      if (Distance(peaks[i].crs, peaks[j].crs) < 2 * reach_m) {
+        parent[std::max(root(i), root(j))] = std::min(root(i), root(j));
+      }
     }
   }
-  int best = 0;
-  for (const auto& [name, count] : counts) {
-    if (count > best) {
-      best = count;
-      hotspot.dominant_class = name;
+  std::vector<std::vector<std::size_t>> areas;
+  std::vector<long> area_of(peaks.size(), -1);
+  for (std::size_t i = 0; i < peaks.size(); ++i) {  // densest first: the area's first peak
+    const std::size_t r = root(i);
+    if (area_of[r] < 0) {
+      area_of[r] = static_cast<long>(areas.size());
+      areas.emplace_back();
+    }
+    areas[static_cast<std::size_t>(area_of[r])].push_back(i);
+  }
+  return areas;
+}
+
+std::vector<db::PointXY> Outline(const std::vector<db::PointXY>& peaks, double radius_m) {
+  constexpr int kSides = 24;
+  std::vector<cv::Point2d> points;
+  for (const db::PointXY& p : peaks) {
+    for (int k = 0; k < kSides; ++k) {
+      const double angle = 2 * std::numbers::pi * k / kSides;
+      points.emplace_back(p.x + radius_m * std::cos(angle), p.y + radius_m * std::sin(angle));
     }
   }
+  std::vector<cv::Point2f> points_f(points.begin(), points.end());
+  std::vector<cv::Point2f> hull;
+  cv::convexHull(points_f, hull, /*clockwise=*/false);
+  std::vector<db::PointXY> outline;
+  for (const cv::Point2f& p : hull) outline.push_back({p.x, p.y});
+  return outline;
 }
 
 }  // namespace
 
-std::vector<Hotspot> FindHotspots(const Raster& density, float nodata,
+HotspotOptions HotspotSupport(std::size_t runs) {
+  HotspotOptions options;
+  options.min_items = 3;
+  options.min_effort_surveys = runs >= 2 ? 2.0 : 1.0;
+  return options;
+}
+
+std::vector<Hotspot> FindHotspots(const Raster& all_density, float nodata,
                                   std::span<const ClassifiedPoint> items,
-                                  const HotspotOptions& options) {
+                                  const HotspotOptions& options, const Raster* effort) {
+  // Ground surveyed too rarely takes no part: at the fringe of the runs' coverage one survey's
+  // find is a high density by chance, and the peaks would sit there.
+  Raster density = all_density;
+  if (effort != nullptr) {
+    for (int r = 0; r < density.grid.height; ++r) {
+      for (int c = 0; c < density.grid.width; ++c) {
+        if (effort->at(c, r) < options.min_effort_surveys) density.at(c, r) = nodata;
+      }
+    }
+  }
   const GridGeometry& grid = density.grid;
   const int radius =
       std::max(1, static_cast<int>(std::ceil(options.separation_m / grid.cell_size_m)));
-  std::vector<Hotspot> hotspots;
+  std::vector<Peak> peaks;
   for (int r = 0; r < grid.height; ++r) {
     for (int c = 0; c < grid.width; ++c) {
       const float value = density.at(c, r);
       if (value == nodata || value <= 0.0f || value < options.min_density_per_100m2) continue;
       if (!IsLocalMaximum(density, c, r, radius, nodata)) continue;
-      Hotspot hotspot;
-      hotspot.crs = {grid.CellCenterX(c), grid.CellCenterY(r)};
-      hotspot.density_per_100m2 = value;
-      hotspots.push_back(hotspot);
+      peaks.push_back({{grid.CellCenterX(c), grid.CellCenterY(r)}, value});
     }
   }
-  std::sort(hotspots.begin(), hotspots.end(), [](const Hotspot& a, const Hotspot& b) {
+  std::stable_sort(peaks.begin(), peaks.end(), [](const Peak& a, const Peak& b) {
     return a.density_per_100m2 > b.density_per_100m2;
   });
-  if (static_cast<int>(hotspots.size()) > options.max_count) hotspots.resize(options.max_count);
-  for (std::size_t i = 0; i < hotspots.size(); ++i) {
-    hotspots[i].rank = static_cast<int>(i) + 1;
-    Classify(hotspots[i], items, options.separation_m);
+
+  std::vector<Hotspot> hotspots;
+  for (const std::vector<std::size_t>& area : MergeOverlapping(peaks, options.separation_m)) {
+    const Peak& densest = peaks[area.front()];
+    Hotspot hotspot;
+    hotspot.crs = densest.crs;
+    hotspot.density_per_100m2 = densest.density_per_100m2;
+    for (const std::size_t i : area) hotspot.peaks.push_back(peaks[i].crs);
+    for (const ClassifiedPoint& item : items) {
+      const bool near = std::any_of(hotspot.peaks.begin(), hotspot.peaks.end(), [&](auto& p) {
+        return Distance(item.crs, p) <= options.separation_m;
+      });
+      if (!near) continue;
+      ++hotspot.items_by_class[item.class_name];
+      ++hotspot.items_nearby;
+    }
+    if (hotspot.items_nearby < options.min_items) continue;
+    int best = 0;
+    for (const auto& [name, count] : hotspot.items_by_class) {
+      if (count > best) {
+        best = count;
+        hotspot.dominant_class = name;
+      }
+    }
+    hotspot.outline = Outline(hotspot.peaks, options.separation_m);
+    hotspots.push_back(std::move(hotspot));
+    if (static_cast<int>(hotspots.size()) == options.max_count) break;
   }
+  for (std::size_t i = 0; i < hotspots.size(); ++i) hotspots[i].rank = static_cast<int>(i) + 1;
   return hotspots;
 }
 

@@ -11,6 +11,7 @@
 #include "core/time.hpp"
 #include "reports/class_palette.hpp"
 #include "reports/html_text.hpp"
+#include "reports/plain_words.hpp"
 #include "reports/svg_charts.hpp"
 
 namespace littermap::reports {
@@ -61,35 +62,49 @@ td.where { min-width: 200px; }
 .chart .axis { stroke: #888; }
 .spark path { fill: none; stroke: var(--accent); stroke-width: 1.5; }
 .spark circle { fill: var(--accent); }
+.spark line.base { stroke: #bbbbbb; stroke-width: 1; }
+.spark text { fill: #555555; }
 ul.warnings { margin: 0; padding-left: 1.1em; color: #8a4b00; }
 .ok { color: var(--accent); }
+.phone-only { display: none; }
 footer { margin-top: 2em; color: var(--muted); font-size: 0.85em; }
-@media (max-width: 760px) {
+@media screen and (max-width: 760px) {
   main { padding: 10px; }
   .cards { grid-template-columns: repeat(2, 1fr); }
   .charts { grid-template-columns: 1fr; }
-  td img.close-up { width: 80px; height: 80px; }
-  .table-wrap table { min-width: 720px; }  /* scroll sideways rather than squash columns */
+  /* Each row a card: the cells stacked, each with its column's name, nothing to scroll. */
+  table.cards-on-phone thead { display: none; }
+  table.cards-on-phone, table.cards-on-phone tbody, table.cards-on-phone tr,
+  table.cards-on-phone td { display: block; width: 100%; }
+  table.cards-on-phone tr { border: 1px solid var(--line); border-radius: 6px; margin: 0 0 10px;
+    padding: 4px 8px; }
+  table.cards-on-phone td { border: none; padding: 3px 0; text-align: left; white-space: normal;
+    min-width: 0; }
+  table.cards-on-phone td[data-label]::before { content: attr(data-label) ": ";
+    color: var(--muted); font-size: 0.9em; }
+  table.cards-on-phone td.close-up-cell { float: right; margin-left: 8px; }
+  .phone-only { display: inline; }
+  td img.close-up { width: 96px; height: 96px; }
 }
 @page { size: A4; margin: 12mm; }
 @media print {
-  body { font-size: 10.5pt; }
+  body { font-size: 10pt; -webkit-print-color-adjust: exact; print-color-adjust: exact; }
   main { max-width: none; padding: 0; }
   .cards { grid-template-columns: repeat(6, 1fr); }
-  h2 { break-after: avoid; }
-  tr, figure, .card, .chart { break-inside: avoid; }
-  figure img.map { max-height: 170mm; width: auto; max-width: 100%; }
+  h2 { break-after: avoid; margin-top: 1.1em; }
+  tr, figure, .card, .chart, .charts, details, .closing { break-inside: avoid; }
+  figure img.map { max-height: 150mm; width: auto; max-width: 100%; }
   .table-wrap { overflow: visible; }
+  /* The three charts side by side, a third of the page high at most. */
+  .charts { grid-template-columns: repeat(3, 1fr); }
+  .chart { max-height: 80mm; }
+  td img.close-up { width: 80px; height: 80px; }
 }
 )css";
 
 std::string Fixed(double value, int decimals) { return FormatNumber(value, decimals); }
 
 std::string Count(std::size_t n) { return FormatNumber(static_cast<double>(n), 0); }
-
-std::string Plural(std::size_t n, const char* one, const char* many) {
-  return Count(n) + " " + (n == 1 ? one : many);
-}
 
 std::string Area(double m2) {
   return m2 >= 10000 ? Fixed(m2 / 10000, 2) + " ha" : Fixed(m2, 0) + " m²";
@@ -101,11 +116,12 @@ std::string Distance(double m) {
 
 std::string Date(double unix_s) { return FormatUtc(unix_s, "%Y-%m-%d %H:%M"); }
 
-std::string Img(const cv::Mat& image, const std::string& alt, const char* css_class) {
+std::string Img(const cv::Mat& image, const std::string& alt, const char* css_class,
+                const std::string& attributes = "") {
   const std::vector<unsigned char> png = EncodePng(image);
   return "<img class=\"" + std::string(css_class) + "\" src=\"data:image/png;base64," +
          Base64(png) + "\" width=\"" + std::to_string(image.cols) + "\" height=\"" +
-         std::to_string(image.rows) + "\" alt=\"" + EscapeHtml(alt) + "\">";
+         std::to_string(image.rows) + "\" alt=\"" + EscapeHtml(alt) + "\"" + attributes + ">";
 }
 
 // Short run labels for chart axes: the date, with the time when two runs share a day.
@@ -134,14 +150,13 @@ std::string ClassList(const ClassCounts& counts) {
   std::string text;
   for (const auto& [name, count] : sorted) {
     if (!text.empty()) text += ", ";
-    text += std::to_string(count) + " " + EscapeHtml(StyleOf(name).label);
+    text += EscapeHtml(ClassCount(name, static_cast<std::size_t>(count)));
   }
   return text.empty() ? "none" : text;
 }
 
 std::string Location(const SiteReport& report, const HotspotFigures& h) {
-  std::string text =
-      Fixed(h.site_xy.x, 1) + " m east, " + Fixed(h.site_xy.y, 1) + " m north of the dock";
+  std::string text = FromTheDock(h.site_xy.x, h.site_xy.y, 1);
   if (report.frame.georeferenced()) {
     text += "<br><span class=\"muted\">EPSG:" + std::to_string(report.frame.epsg_code) + " E " +
             Fixed(h.crs.x, 1) + ", N " + Fixed(h.crs.y, 1) + "</span>";
@@ -187,16 +202,15 @@ void KeyFigures(const SiteReport& report, std::string& html) {
   html += "<p class=\"summary\">";
   if (!report.hotspots.empty()) {
     const HotspotFigures& top = report.hotspots.front();
-    html += "Clean first at <b>hotspot 1</b>, " + Fixed(top.site_xy.x, 0) + " m east and " +
-            Fixed(top.site_xy.y, 0) + " m north of the dock: " + Fixed(top.density_per_100m2, 1) +
-            " items per 100 m² each survey, mostly " +
-            EscapeHtml(StyleOf(top.dominant_class).label) + ". ";
+    html += "Clean first at <b>hotspot 1</b>, " + FromTheDock(top.site_xy.x, top.site_xy.y, 0) +
+            ": " + Fixed(top.density_per_100m2, 1) + " items per 100 m² each survey, mostly " +
+            EscapeHtml(StyleOf(top.dominant_class).many) + ". ";
   } else {
     html += "No litter hotspot: no litter was found. ";
   }
   if (latest) {
     html += "The latest run (" + EscapeHtml(latest->name) + ", " + Date(latest->start_time_s) +
-            ") found " + Plural(latest->items_found, "item", "items") + ", " +
+            ") found " + CountOf(latest->items_found, "item", "items") + ", " +
             Count(latest->new_items) + " of them new, on " + Area(latest->observed_area_m2) + " (" +
             FormatPercent(latest->coverage_fraction) + " of the surveyed ground).";
   }
@@ -205,10 +219,16 @@ void KeyFigures(const SiteReport& report, std::string& html) {
 
 void MapSection(const SiteReport& report, const SiteMapFigure& figure, std::string& html) {
   html += "<section id=\"map\"><h2>Site map</h2><figure>";
+  // The hotspot numbers' boxes on the image (x,y,w,h;...), for checks of the figure.
+  std::string boxes;
+  for (const cv::Rect& box : figure.label_boxes) {
+    boxes += std::to_string(box.x) + "," + std::to_string(box.y) + "," + std::to_string(box.width) +
+             "," + std::to_string(box.height) + ";";
+  }
   html += Img(figure.map,
               "Map of " + report.site_name +
-                  ": litter density in colour, items as dots, hotspots circled and numbered",
-              "map");
+                  ": litter density in colour, items as dots, hotspots outlined and numbered",
+              "map", " data-label-boxes=\"" + boxes + "\"");
   html +=
       "<figcaption class=\"legend\"><span>Litter density, items per 100 m² per survey: "
       "0<span class=\"ramp\"></span>" +
@@ -220,7 +240,8 @@ void MapSection(const SiteReport& report, const SiteMapFigure& figure, std::stri
         "surveyed</span><span><span class=\"swatch\" style=\"background:#2d2d2d\"></span>"
         "trees, walls, fences</span>";
   }
-  html += "<span>◯ hotspot (" + Fixed(report.bandwidth_m, 0) + " m radius)</span>";
+  html +=
+      "<span>◯ hotspot: within " + Fixed(report.bandwidth_m, 0) + " m of its densest places</span>";
   std::set<std::string> classes;
   for (const db::ItemRecord& item : report.heatmap.items) classes.insert(item.class_name);
   for (const std::string& name : classes) html += "<span>" + ClassLabel(name) + "</span>";
@@ -239,26 +260,40 @@ void MapSection(const SiteReport& report, const SiteMapFigure& figure, std::stri
 void HotspotSection(const SiteReport& report, const SiteMapFigure& figure, std::string& html) {
   html += "<section id=\"hotspots\"><h2>Where to clean first</h2>";
   if (report.hotspots.empty()) {
-    html += "<p>No hotspots: the surveys found no litter.</p></section>";
+    html += std::string("<p>No hotspots: ") +
+            (report.items == 0 ? "the surveys found no litter."
+                               : "no place has enough litter, surveyed often enough, to be one.") +
+            "</p></section>";
     return;
   }
-  html += "<p class=\"muted\">Ranked by litter density. Items nearby: distinct items within " +
-          Fixed(report.bandwidth_m, 0) +
-          " m. Trend: the mean density each run found within that radius, oldest run first.</p>";
+  html += "<p class=\"muted\">A hotspot is a place with at least " +
+          CountOf(static_cast<std::size_t>(report.hotspot_min_items), "item", "items") +
+          " within " + Fixed(report.bandwidth_m, 0) + " m, on ground " +
+          (report.hotspot_min_surveys >= 2
+               ? "at least " + Fixed(report.hotspot_min_surveys, 0) + " runs surveyed"
+               : std::string("the run surveyed")) +
+          "; dense places closer than " + Fixed(2 * report.bandwidth_m, 0) +
+          " m are one hotspot. Ranked by litter density. Items nearby: its distinct items. "
+          "Trend: the mean density each run found within that radius, oldest run first, from "
+          "the first run's value (left) to the latest's (right); the grey line is zero.</p>";
   html +=
-      "<div class=\"table-wrap\"><table id=\"hotspot-table\"><thead><tr><th>#</th>"
+      "<div class=\"table-wrap\"><table id=\"hotspot-table\" "
+      "class=\"cards-on-phone\"><thead><tr><th>#</th>"
       "<th>Close-up</th><th>Location</th><th class=\"n\">Density<br>per 100 m²</th>"
       "<th>Mostly</th><th>Items nearby</th><th>Trend</th></tr></thead><tbody>";
   for (std::size_t i = 0; i < report.hotspots.size(); ++i) {
     const HotspotFigures& h = report.hotspots[i];
     double peak = 0;
     for (const auto& v : h.density_by_run) peak = std::max(peak, v.value_or(0.0));
-    html += "<tr><td class=\"n\"><b>" + std::to_string(h.rank) + "</b></td><td>" +
+    html += "<tr><td class=\"n\"><b><span class=\"phone-only\">Hotspot </span>" +
+            std::to_string(h.rank) + "</b></td><td class=\"close-up-cell\">" +
             Img(figure.close_ups[i], "Close-up of hotspot " + std::to_string(h.rank), "close-up") +
-            "</td><td class=\"where\">" + Location(report, h) + "</td><td class=\"n\">" +
-            Fixed(h.density_per_100m2, 1) + "</td><td>" + ClassLabel(h.dominant_class) +
-            "</td><td>" + ClassList(h.items_by_class) + "</td><td>" +
-            Sparkline(h.density_by_run, peak, 96, 30) + "</td></tr>";
+            "</td><td class=\"where\">" + Location(report, h) +
+            "</td><td class=\"n\" data-label=\"Density per 100 m²\">" +
+            Fixed(h.density_per_100m2, 1) + "</td><td data-label=\"Mostly\">" +
+            ClassLabel(h.dominant_class) + "</td><td data-label=\"Items nearby\">" +
+            ClassList(h.items_by_class) + "</td><td data-label=\"Trend\">" +
+            Sparkline(h.density_by_run, peak, 96, 42) + "</td></tr>";
   }
   html += "</tbody></table></div></section>";
 }
@@ -312,20 +347,27 @@ void ChangeSection(const SiteReport& report, std::string& html) {
       "park being cleaner: compare items per 100 m², not totals. <i>Gone</i>: items a run "
       "looked for where they were and did not find (picked up, or missed).</p>";
   html +=
-      "<div class=\"table-wrap\"><table id=\"run-table\"><thead><tr><th>Started (UTC)</th>"
+      "<div class=\"table-wrap\"><table id=\"run-table\" "
+      "class=\"cards-on-phone\"><thead><tr><th>Started (UTC)</th>"
       "<th>Run</th><th class=\"n\">Driven</th><th class=\"n\">Surveyed</th>"
       "<th class=\"n\">Coverage</th><th class=\"n\">Found</th><th class=\"n\">New</th>"
       "<th class=\"n\">Still there</th><th class=\"n\">Gone</th>"
       "<th class=\"n\">Per 100 m²</th></tr></thead><tbody>";
   for (const RunFigures& run : report.runs) {
-    html += "<tr><td>" + Date(run.start_time_s) + "</td><td>" + EscapeHtml(run.name) +
-            "</td><td class=\"n\">" + Distance(run.length_m) + "</td><td class=\"n\">" +
-            Area(run.observed_area_m2) + "</td><td class=\"n\">" +
-            FormatPercent(run.coverage_fraction) + "</td><td class=\"n\">" +
-            Count(run.items_found) + "</td><td class=\"n\">" + Count(run.new_items) +
-            "</td><td class=\"n\">" + Count(run.items_still_there) + "</td><td class=\"n\">" +
-            Count(run.items_gone) + "</td><td class=\"n\">" + Fixed(run.items_per_100m2, 2) +
-            "</td></tr>";
+    const auto cell = [&](const char* label, const std::string& value) {
+      html += std::string("<td class=\"n\" data-label=\"") + label + "\">" + value + "</td>";
+    };
+    html +=
+        "<tr><td>" + Date(run.start_time_s) + "</td><td><b>" + EscapeHtml(run.name) + "</b></td>";
+    cell("Driven", Distance(run.length_m));
+    cell("Surveyed", Area(run.observed_area_m2));
+    cell("Coverage", FormatPercent(run.coverage_fraction));
+    cell("Found", Count(run.items_found));
+    cell("New", Count(run.new_items));
+    cell("Still there", Count(run.items_still_there));
+    cell("Gone", Count(run.items_gone));
+    cell("Per 100 m²", Fixed(run.items_per_100m2, 2));
+    html += "</tr>";
   }
   html += "</tbody></table></div></section>";
 }
@@ -341,43 +383,105 @@ std::string Routines(const RunQuality& quality) {
   return text;
 }
 
+// How sure we are where the robot was, in a phrase: by the share of its way that only the wheel
+// odometry placed (the laser and the camera place the rest to centimetres).
+std::string Certainty(const RunFigures& run) {
+  const RunQuality& quality = run.quality;
+  if (!quality.known || quality.scans == 0) return "not known (no reconstruction record)";
+  const auto odometry = quality.routines.find("odometry-only");
+  const double share = odometry == quality.routines.end()
+                           ? 0.0
+                           : static_cast<double>(odometry->second) / quality.scans;
+  std::string text;
+  if (share > 0.2) {
+    text = "<b>unsure</b>: for " + FormatPercent(share) +
+           " of the way only the wheels told where the robot was";
+  } else if (share > 0.05) {
+    text = "<b>fairly sure</b>: for " + FormatPercent(share) +
+           " of the way only the wheels told where the robot was";
+  } else {
+    text =
+        "<b>sure</b>: the laser or the camera placed " + FormatPercent(1 - share) + " of the way";
+  }
+  if (quality.loop_closures_accepted > 0) {
+    text += "; " +
+            CountOf(static_cast<std::size_t>(quality.loop_closures_accepted),
+                    "return to a known place", "returns to known places") +
+            " corrected the drift";
+  }
+  return text;
+}
+
+// A warning's kind: its text without the figures, so that "60 scans ..." in one run and "58
+// scans ..." in the next are shown once.
+std::string WarningKind(const std::string& warning) {
+  std::string kind;
+  for (const char c : warning) {
+    const bool digit = c >= '0' && c <= '9';
+    if (!digit || kind.empty() || kind.back() != '#') kind += digit ? '#' : c;
+  }
+  return kind;
+}
+
 void QualitySection(const SiteReport& report, std::string& html) {
   html += "<section id=\"quality\"><h2>Survey quality</h2>";
   html +=
-      "<p class=\"muted\">How each run's path was reconstructed: the share of laser scans "
-      "placed by each tracking routine (global scan matching, the key-frame buffer, the "
-      "RGB-D camera, odometry alone), loop closures that corrected drift, and how well the "
-      "run's map matched the site map.</p>";
-  html +=
-      "<div class=\"table-wrap\"><table id=\"quality-table\"><thead><tr><th>Run</th>"
-      "<th>Scans placed by</th><th class=\"n\">Loop closures</th>"
-      "<th class=\"n\">Site-map match</th><th class=\"n\">Coverage</th><th>Warnings</th>"
-      "</tr></thead><tbody>";
+      "<p class=\"muted\">How sure we are where the robot was on each run: litter is placed on "
+      "the map by the robot's path, so an unsure path places litter less exactly.</p>";
+  html += "<ul class=\"certainty\">";
   for (const RunFigures& run : report.runs) {
-    html += "<tr><td>" + EscapeHtml(run.name) + "</td><td>" + Routines(run.quality) +
-            "</td><td class=\"n\">" +
-            (run.quality.known ? std::to_string(run.quality.loop_closures_accepted) + " of " +
-                                     std::to_string(run.quality.loop_closures_found)
-                               : std::string("–")) +
-            "</td><td class=\"n\">" +
-            (run.registration_quality ? FormatPercent(*run.registration_quality)
-                                      : std::string("defines the map")) +
-            "</td><td class=\"n\">" + FormatPercent(run.coverage_fraction) + "</td><td>";
-    if (run.warnings.empty()) {
-      html += "<span class=\"ok\">none</span>";
-    } else {
-      html += "<ul class=\"warnings\">";
-      for (const std::string& warning : run.warnings)
-        html += "<li>" + EscapeHtml(warning) + "</li>";
-      html += "</ul>";
-    }
-    html += "</td></tr>";
+    html += "<li>" + EscapeHtml(run.name) + ": " + Certainty(run) + "</li>";
   }
-  html += "</tbody></table></div>";
+  html += "</ul>";
+
+  // Each warning once, with the runs it concerns.
+  std::vector<std::pair<std::string, std::vector<std::string>>> warnings;  // text, runs
+  std::map<std::string, std::size_t> index_of_kind;
+  for (const RunFigures& run : report.runs) {
+    for (const std::string& warning : run.warnings) {
+      const auto [it, added] = index_of_kind.emplace(WarningKind(warning), warnings.size());
+      if (added) warnings.push_back({warning, {}});
+      warnings[it->second].second.push_back(run.name);
+    }
+  }
+  if (!warnings.empty()) {
+    html += "<ul class=\"warnings\">";
+    for (const auto& [warning, runs] : warnings) {
+      std::string names;
+      for (const std::string& name : runs) names += (names.empty() ? "" : ", ") + name;
+      html += "<li>" + EscapeHtml(warning) +
+              (runs.size() == 1 ? " (run " : " (" + Count(runs.size()) + " runs: ") +
+              EscapeHtml(names) + ")</li>";
+    }
+    html += "</ul>";
+  }
   for (const std::string& warning : report.warnings) {
     html += "<p class=\"muted\">" + EscapeHtml(warning) + "</p>";
   }
-  html += "</section>";
+
+  html +=
+      "<details><summary>Technical details</summary><p class=\"muted\">The share of laser "
+      "scans placed by each tracking routine (global scan matching, the key-frame buffer, the "
+      "RGB-D camera, odometry alone), loop closures accepted of those found, and how well the "
+      "run's map matched the site map.</p>";
+  html +=
+      "<div class=\"table-wrap\"><table id=\"quality-table\" "
+      "class=\"cards-on-phone\"><thead><tr><th>Run</th>"
+      "<th>Scans placed by</th><th class=\"n\">Loop closures</th>"
+      "<th class=\"n\">Site-map match</th><th class=\"n\">Coverage</th></tr></thead><tbody>";
+  for (const RunFigures& run : report.runs) {
+    html += "<tr><td><b>" + EscapeHtml(run.name) + "</b></td><td data-label=\"Scans placed by\">" +
+            Routines(run.quality) + "</td><td class=\"n\" data-label=\"Loop closures\">" +
+            (run.quality.known ? std::to_string(run.quality.loop_closures_accepted) + " of " +
+                                     std::to_string(run.quality.loop_closures_found)
+                               : std::string("–")) +
+            "</td><td class=\"n\" data-label=\"Site-map match\">" +
+            (run.registration_quality ? FormatPercent(*run.registration_quality)
+                                      : std::string("defines the map")) +
+            "</td><td class=\"n\" data-label=\"Coverage\">" + FormatPercent(run.coverage_fraction) +
+            "</td></tr>";
+  }
+  html += "</tbody></table></div></details></section>";
 }
 
 }  // namespace
@@ -392,14 +496,17 @@ std::string HtmlReport(const SiteReport& report, const SiteMapFigure& figure,
       "<title>Litter report: " +
       EscapeHtml(report.site_name) + "</title><style>" + kStyle + "</style></head><body><main>";
   html += "<header><h1>Litter report: " + EscapeHtml(report.site_name) + "</h1><p class=\"sub\">" +
-          Period(report) + Plural(report.runs.size(), "survey run", "survey runs") +
+          Period(report) + CountOf(report.runs.size(), "survey run", "survey runs") +
           " · generated " + EscapeHtml(options.generated_utc) + " UTC</p></header>";
   KeyFigures(report, html);
   MapSection(report, figure, html);
   HotspotSection(report, figure, html);
   ClassSection(report, html);
+  // Printed, the last two sections stay together: the last page is never a stub of a few lines.
+  html += "<div class=\"closing\">";
   ChangeSection(report, html);
   QualitySection(report, html);
+  html += "</div>";
   html += "<footer>Made by littermap " + EscapeHtml(options.version) +
           ". The same figures are in report.json; the site database (a GeoPackage) and the "
           "density GeoTIFFs of <code>littermap heatmap</code> open in QGIS.</footer>";

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include <opencv2/imgcodecs.hpp>
@@ -28,17 +29,33 @@ struct PixelMapping {
 };
 
 // A bar of 1, 2 or 5 times a power of ten metres, about a fifth of the map wide.
-void DrawScaleBar(cv::Mat& image, double pixels_per_m) {
+double ScaleBarLengthM(const cv::Mat& image, double pixels_per_m) {
   const double wanted_m = image.cols / 5.0 / pixels_per_m;
   const double power = std::pow(10.0, std::floor(std::log10(wanted_m)));
   double length_m = power;
   for (const double step : {2.0, 5.0, 10.0}) {
     if (step * power <= wanted_m) length_m = step * power;
   }
+  return length_m;
+}
+
+cv::Rect ScaleBarBox(const cv::Mat& image, double pixels_per_m) {
+  const int length_px =
+      static_cast<int>(std::lround(ScaleBarLengthM(image, pixels_per_m) * pixels_per_m));
+  const cv::Point left(14, image.rows - 16);
+  return {left + cv::Point(-8, -30), left + cv::Point(length_px + 8, 8)};
+}
+
+cv::Rect NorthArrowBox(const cv::Mat& image) {
+  const cv::Point tip(image.cols - 28, 14);
+  return {tip + cv::Point(-18, -8), tip + cv::Point(18, 50)};
+}
+
+void DrawScaleBar(cv::Mat& image, double pixels_per_m) {
+  const double length_m = ScaleBarLengthM(image, pixels_per_m);
   const int length_px = static_cast<int>(std::lround(length_m * pixels_per_m));
   const cv::Point left(14, image.rows - 16);
-  cv::rectangle(image, left + cv::Point(-8, -30), left + cv::Point(length_px + 8, 8), kWhite,
-                cv::FILLED);
+  cv::rectangle(image, ScaleBarBox(image, pixels_per_m), kWhite, cv::FILLED);
   cv::rectangle(image, left + cv::Point(0, -6), left + cv::Point(length_px / 2, 0), kInk,
                 cv::FILLED);
   cv::rectangle(image, left + cv::Point(0, -6), left + cv::Point(length_px, 0), kInk, 1);
@@ -51,7 +68,7 @@ void DrawScaleBar(cv::Mat& image, double pixels_per_m) {
 
 void DrawNorthArrow(cv::Mat& image) {
   const cv::Point tip(image.cols - 28, 14);
-  cv::rectangle(image, tip + cv::Point(-18, -8), tip + cv::Point(18, 50), kWhite, cv::FILLED);
+  cv::rectangle(image, NorthArrowBox(image), kWhite, cv::FILLED);
   const std::array<cv::Point, 3> arrow = {tip, tip + cv::Point(-10, 26), tip + cv::Point(10, 26)};
   cv::fillConvexPoly(image, arrow.data(), 3, kInk, cv::LINE_AA);
   cv::putText(image, "N", tip + cv::Point(-7, 46), cv::FONT_HERSHEY_SIMPLEX, 0.6, kInk, 2,
@@ -66,19 +83,78 @@ void DrawItems(cv::Mat& image, const SiteReport& report, const PixelMapping& to_
   }
 }
 
-void DrawHotspots(cv::Mat& image, const SiteReport& report, const PixelMapping& to_pixel) {
-  const int radius = static_cast<int>(std::lround(report.bandwidth_m * to_pixel.pixels_per_m));
-  for (const HotspotFigures& h : report.hotspots) {
-    const cv::Point p = to_pixel(h.crs);
-    cv::circle(image, p, radius, kWhite, 3, cv::LINE_AA);
-    cv::circle(image, p, radius, kInk, 1, cv::LINE_AA);
-    const std::string rank = std::to_string(h.rank);
-    const cv::Point label =
-        p + cv::Point(static_cast<int>(radius * 0.72) + 2, -static_cast<int>(radius * 0.72) - 2);
-    cv::circle(image, label, 13, kInk, cv::FILLED, cv::LINE_AA);
-    cv::putText(image, rank, label + cv::Point(rank.size() > 1 ? -10 : -5, 6),
-                cv::FONT_HERSHEY_SIMPLEX, 0.55, kWhite, 2, cv::LINE_AA);
+constexpr int kLabelRadiusPx = 13;
+
+// Where a hotspot's number goes: beside its outline, in the first of eight directions (north-east
+// first) and rings outwards where its box covers no box placed before (numbers of denser
+// hotspots, the north arrow, the scale bar) and stays on the map.
+cv::Rect PlaceLabel(const cv::Mat& image, cv::Point centre, const std::vector<cv::Point>& outline,
+                    const std::vector<cv::Rect>& taken, cv::Point* anchor) {
+  constexpr int kSize = 2 * kLabelRadiusPx + 2;
+  const cv::Rect map(0, 0, image.cols, image.rows);
+  cv::Rect fallback;
+  for (int ring = 0; ring < 8; ++ring) {
+    for (int k = 0; k < 8; ++k) {
+      const double angle = std::numbers::pi / 4 - k * std::numbers::pi / 4;  // NE, E, SE, ...
+      const cv::Point2d direction(std::cos(angle), -std::sin(angle));        // image y is down
+      double extent = 0;  // how far the outline reaches in this direction
+      cv::Point edge = centre;
+      for (const cv::Point& p : outline) {
+        const double along = cv::Point2d(p - centre).dot(direction);
+        if (along > extent) {
+          extent = along;
+          edge = p;
+        }
+      }
+      const double distance = extent + kLabelRadiusPx + 3 + ring * (kSize + 4);
+      const cv::Point at(static_cast<int>(std::lround(centre.x + distance * direction.x)),
+                         static_cast<int>(std::lround(centre.y + distance * direction.y)));
+      const cv::Rect box(at.x - kSize / 2, at.y - kSize / 2, kSize, kSize);
+      if (ring == 0 && k == 0) {
+        fallback = box;
+        *anchor = edge;
+      }
+      if ((box & map) != box) continue;
+      const bool free = std::none_of(taken.begin(), taken.end(), [&](const cv::Rect& other) {
+        return (box & other).area() > 0;
+      });
+      if (!free) continue;
+      *anchor = edge;
+      return box;
+    }
   }
+  return fallback;
+}
+
+std::vector<cv::Rect> DrawHotspots(cv::Mat& image, const SiteReport& report,
+                                   const PixelMapping& to_pixel) {
+  std::vector<std::vector<cv::Point>> outlines;
+  for (const HotspotFigures& h : report.hotspots) {
+    std::vector<cv::Point>& outline = outlines.emplace_back();
+    for (const db::PointXY& p : h.outline) outline.push_back(to_pixel(p));
+    if (outline.empty()) outline.push_back(to_pixel(h.crs));
+    cv::polylines(image, outline, true, kWhite, 3, cv::LINE_AA);
+    cv::polylines(image, outline, true, kInk, 1, cv::LINE_AA);
+  }
+  std::vector<cv::Rect> taken = {NorthArrowBox(image), ScaleBarBox(image, to_pixel.pixels_per_m)};
+  std::vector<cv::Rect> labels;
+  for (std::size_t i = 0; i < report.hotspots.size(); ++i) {
+    const HotspotFigures& h = report.hotspots[i];
+    cv::Point anchor;
+    const cv::Rect box = PlaceLabel(image, to_pixel(h.crs), outlines[i], taken, &anchor);
+    const cv::Point centre(box.x + box.width / 2, box.y + box.height / 2);
+    if (cv::norm(centre - anchor) > kLabelRadiusPx + 6) {  // set apart: a leader line
+      cv::line(image, anchor, centre, kWhite, 3, cv::LINE_AA);
+      cv::line(image, anchor, centre, kInk, 1, cv::LINE_AA);
+    }
+    const std::string rank = std::to_string(h.rank);
+    cv::circle(image, centre, kLabelRadiusPx, kInk, cv::FILLED, cv::LINE_AA);
+    cv::putText(image, rank, centre + cv::Point(rank.size() > 1 ? -10 : -5, 6),
+                cv::FONT_HERSHEY_SIMPLEX, 0.55, kWhite, 2, cv::LINE_AA);
+    taken.push_back(box);
+    labels.push_back(box);
+  }
+  return labels;
 }
 
 cv::Mat CloseUp(const cv::Mat& map, cv::Point centre, int half_px, int size_px) {
@@ -114,7 +190,7 @@ SiteMapFigure DrawSiteMap(const SiteReport& report, const SiteMapFigureOptions& 
   figure.metres_per_pixel = 1.0 / pixels_per_m;
   const PixelMapping to_pixel{&density.grid, pixels_per_m};
   DrawItems(figure.map, report, to_pixel);
-  DrawHotspots(figure.map, report, to_pixel);
+  figure.label_boxes = DrawHotspots(figure.map, report, to_pixel);
 
   const int half_px = std::max(8, static_cast<int>(options.close_up_radius_m * pixels_per_m));
   for (const HotspotFigures& h : report.hotspots) {

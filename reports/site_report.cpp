@@ -72,10 +72,6 @@ void AddRunWarnings(const SiteReportOptions& options, RunFigures& run) {
   }
 }
 
-double Distance(const db::PointXY& a, const db::PointXY& b) {
-  return std::hypot(a.x - b.x, a.y - b.y);
-}
-
 // New, still there and gone per run, replaying every run of the site in start-time order (so
 // the runs before the period set the state the period starts from).
 void CountItemChanges(db::SiteDatabase& site, const std::vector<db::RunRecord>& all_runs,
@@ -213,9 +209,12 @@ SiteReport BuildSiteReport(db::SiteDatabase& site, const SiteReportOptions& opti
   for (const db::ItemRecord& item : map.items) {
     points.push_back({report.frame.ToCrs(item.site_xy), item.class_name});
   }
-  heatmap::HotspotOptions hotspot_options;
+  heatmap::HotspotOptions hotspot_options = heatmap::HotspotSupport(map.run_ids.size());
   hotspot_options.separation_m = report.bandwidth_m;
   hotspot_options.max_count = options.max_hotspots;
+  hotspot_options.min_items = options.hotspot_min_items;
+  report.hotspot_min_items = hotspot_options.min_items;
+  report.hotspot_min_surveys = hotspot_options.min_effort_surveys;
   const float nodata = options.heatmap.density.nodata;
   std::vector<heatmap::Raster> run_density;
   for (const RunFigures& run : report.runs) {
@@ -232,7 +231,7 @@ SiteReport BuildSiteReport(db::SiteDatabase& site, const SiteReportOptions& opti
         "dock, without GPS coordinates.");
   }
   for (const heatmap::Hotspot& h :
-       heatmap::FindHotspots(map.density.density, nodata, points, hotspot_options)) {
+       heatmap::FindHotspots(map.density.density, nodata, points, hotspot_options, &map.effort)) {
     HotspotFigures& f = report.hotspots.emplace_back();
     f.rank = h.rank;
     f.crs = h.crs;
@@ -240,9 +239,8 @@ SiteReport BuildSiteReport(db::SiteDatabase& site, const SiteReportOptions& opti
     if (wgs84) f.wgs84 = (*wgs84)(h.crs);
     f.density_per_100m2 = h.density_per_100m2;
     f.dominant_class = h.dominant_class;
-    for (const heatmap::ClassifiedPoint& p : points) {
-      if (Distance(p.crs, h.crs) <= report.bandwidth_m) ++f.items_by_class[p.class_name];
-    }
+    f.items_by_class = h.items_by_class;
+    f.outline = h.outline;
     for (const heatmap::Raster& density : run_density) {
       f.density_by_run.push_back(MeanWithin(density, h.crs, report.bandwidth_m, nodata));
     }

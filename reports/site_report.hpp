@@ -26,6 +26,7 @@ struct SiteReportOptions {
   std::optional<double> to_time_s;    // runs starting before
   heatmap::SiteHeatmapOptions heatmap;
   int max_hotspots = 10;
+  int hotspot_min_items = heatmap::HotspotSupport(1).min_items;  // distinct items a hotspot needs
   // A run covering less than this share of the ground the site's runs surveyed is flagged.
   double low_coverage_fraction = 0.5;
   double low_registration_quality = 0.6;  // runs matched onto the site map worse are flagged
@@ -70,7 +71,8 @@ struct HotspotFigures {
   std::optional<heatmap::LonLat> wgs84;  // georeferenced sites only
   double density_per_100m2 = 0.0;
   std::string dominant_class;
-  ClassCounts items_by_class;  // distinct items within a kernel bandwidth
+  ClassCounts items_by_class;        // distinct items within a kernel bandwidth of its peaks
+  std::vector<db::PointXY> outline;  // CRS: the hull of its peaks' kernels (heatmap/hotspots)
   // The mean density each run found within a kernel bandwidth of here, in run order; none
   // where the run surveyed nothing of it.
   std::vector<std::optional<double>> density_by_run;
@@ -89,6 +91,8 @@ struct SiteReport {
   double length_m = 0.0;
   double peak_density_per_100m2 = 0.0;
   double bandwidth_m = 0.0;
+  int hotspot_min_items = 0;  // the support a hotspot needs (heatmap::HotspotSupport)
+  double hotspot_min_surveys = 0.0;
   float density_nodata = -9999.0f;  // density raster cells nobody surveyed
   std::vector<HotspotFigures> hotspots;
   std::vector<std::string> warnings;  // about the site as a whole

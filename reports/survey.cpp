@@ -48,6 +48,12 @@ struct Survey {
   }
 };
 
+heatmap::HeatmapFilesOptions HeatmapOptions(const Survey& survey) {
+  heatmap::HeatmapFilesOptions options;
+  options.hotspots.min_items = survey.options.hotspot_min_items;
+  return options;
+}
+
 // Before any long stage: a bad site fails fast.
 void OpenOrCreateSite(const Survey& survey) {
   const fs::path& file = survey.options.site;
@@ -92,13 +98,14 @@ std::vector<Stage> Stages(Survey& survey) {
   };
   const auto heatmap = [&survey](const ProgressCallback&) {
     const heatmap::HeatmapFilesResult result =
-        heatmap::WriteHeatmapFiles(survey.options.site, survey.maps_dir, {});
+        heatmap::WriteHeatmapFiles(survey.options.site, survey.maps_dir, HeatmapOptions(survey));
     survey.Warn(result.warnings);
     survey.Print(heatmap::HeatmapSummary(result, survey.maps_dir));
   };
   const auto report = [&survey](const ProgressCallback&) {
-    survey.report =
-        WriteReportFiles(survey.options.site, survey.report_dir, StampedReportFilesOptions());
+    ReportFilesOptions outputs = StampedReportFilesOptions();
+    outputs.figures.hotspot_min_items = survey.options.hotspot_min_items;
+    survey.report = WriteReportFiles(survey.options.site, survey.report_dir, outputs);
     survey.Print("wrote " + (survey.report_dir / "index.html").string() + " and report.json");
   };
   return {

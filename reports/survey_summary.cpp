@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "reports/class_palette.hpp"
+#include "reports/plain_words.hpp"
 
 namespace littermap::reports {
 
@@ -25,7 +26,7 @@ std::string SurveySummary(const SiteReport& report, const std::string& run_name,
     std::string classes;
     for (const auto& [class_name, count] : run->items_by_class) {
       classes +=
-          (classes.empty() ? "" : ", ") + std::to_string(count) + " " + StyleOf(class_name).label;
+          (classes.empty() ? "" : ", ") + ClassCount(class_name, static_cast<std::size_t>(count));
     }
     print("  litter found: %zu items%s%s%s\n", run->items_found, classes.empty() ? "" : " (",
           classes.c_str(), classes.empty() ? "" : ")");
@@ -37,11 +38,9 @@ std::string SurveySummary(const SiteReport& report, const std::string& run_name,
         report.runs.size() == 1 ? "run" : "runs", report.items);
   for (std::size_t i = 0; i < std::min<std::size_t>(3, report.hotspots.size()); ++i) {
     const HotspotFigures& h = report.hotspots[i];
-    print(
-        "  hotspot %d: %.1f m east, %.1f m north of the dock, %.1f items per 100 m2, "
-        "mostly %s\n",
-        h.rank, h.site_xy.x, h.site_xy.y, h.density_per_100m2,
-        StyleOf(h.dominant_class).label.c_str());
+    print("  hotspot %d: %s, %.1f items per 100 m2, mostly %s\n", h.rank,
+          FromTheDock(h.site_xy.x, h.site_xy.y, 1).c_str(), h.density_per_100m2,
+          StyleOf(h.dominant_class).many.c_str());
   }
   print("Report: %s\n", report_html.c_str());
   return text;

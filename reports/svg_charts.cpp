@@ -92,32 +92,46 @@ std::string StackedBarChart(const std::vector<std::string>& labels,
 std::string Sparkline(const std::vector<std::optional<double>>& values, double max_value,
                       int width_px, int height_px) {
   const double pad = 4;
+  const double label_px = 11;  // below the baseline: the first and the last value
+  const double bottom = height_px - label_px - 1;
   const double top = max_value > 0 ? max_value : 1;
   const double dx =
       values.size() > 1 ? (width_px - 2 * pad) / static_cast<double>(values.size() - 1) : 0;
   const auto point = [&](std::size_t i) {
     const double x = values.size() > 1 ? pad + dx * static_cast<double>(i) : width_px / 2.0;
-    const double y = height_px - pad - (height_px - 2 * pad) * std::min(1.0, *values[i] / top);
+    const double y = bottom - (bottom - pad) * std::min(1.0, *values[i] / top);
     return std::make_pair(x, y);
   };
   std::string svg = "<svg class=\"spark\" viewBox=\"0 0 " + std::to_string(width_px) + " " +
                     std::to_string(height_px) + "\" width=\"" + std::to_string(width_px) +
                     "\" height=\"" + std::to_string(height_px) +
                     "\" role=\"img\" xmlns=\"http://www.w3.org/2000/svg\"><title>density per "
-                    "run</title>";
+                    "run, oldest first</title>";
+  // The baseline is zero density: a line that lies on it is a place found clean.
+  svg += "<line class=\"base\" x1=\"" + Num(pad) + "\" y1=\"" + Num(bottom) + "\" x2=\"" +
+         Num(width_px - pad) + "\" y2=\"" + Num(bottom) + "\"/>";
   std::string path;
   bool pen_down = false;
+  std::optional<std::size_t> first, last;
   for (std::size_t i = 0; i < values.size(); ++i) {
     if (!values[i]) {
       pen_down = false;
       continue;
     }
+    if (!first) first = i;
+    last = i;
     const auto [x, y] = point(i);
     path += (pen_down ? "L" : "M") + Num(x) + " " + Num(y);
     pen_down = true;
     svg += "<circle cx=\"" + Num(x) + "\" cy=\"" + Num(y) + "\" r=\"2.5\"/>";
   }
   if (!path.empty()) svg += "<path d=\"" + path + "\"/>";
+  const auto label = [&](std::size_t i, const char* anchor) {
+    svg += "<text x=\"" + Num(point(i).first) + "\" y=\"" + Num(height_px - 1.0) +
+           "\" font-size=\"10\" text-anchor=\"" + anchor + "\">" + Num(*values[i]) + "</text>";
+  };
+  if (first) label(*first, values.size() > 1 ? "start" : "middle");
+  if (last && last != first) label(*last, "end");
   return svg + "</svg>";
 }
 

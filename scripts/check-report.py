@@ -9,10 +9,14 @@ fails (exit 1, reasons on stderr) unless:
   - it makes no network request (everything is inline; file: and data: URLs only);
   - the hotspot table has one row per hotspot of REPORT_DIR/report.json, every image decoded;
   - the key figures agree with report.json;
-  - on a 390 px wide phone screen nothing but the tables (which scroll) is wider than the screen;
-  - it prints on A4 pages.
-Writes desktop.png (the whole page), phone.png and report.pdf into --screenshots (default
-REPORT_DIR) and prints a one-line summary.
+  - on a 390 px wide phone screen no element, tables included, is wider than the screen (tables
+    become cards there);
+  - the hotspot numbers on the map (their boxes, in the map image's data-label-boxes) cover
+    none of each other;
+  - it prints on A4 pages, none of them less than a quarter full (pages rendered by poppler's
+    pdftoppm, the rows that hold ink counted).
+Writes desktop.png (the whole page, 1280 px wide), phone.png and report.pdf into --screenshots
+(default REPORT_DIR) and prints a one-line summary.
 """
 
 import argparse
@@ -113,11 +117,16 @@ PAGE_FACTS = """(() => {
   for (const card of document.querySelectorAll('.card')) {
     cards[card.querySelector('span').textContent] = card.querySelector('b').textContent;
   }
+  // Inside a closed <details> nothing is laid out; everything else must fit the screen.
   const wide = [...document.querySelectorAll('body *')].filter(e => {
-    if (e.closest('.table-wrap')) return false;
-    return e.getBoundingClientRect().right > window.innerWidth + 1;
-  }).map(e => e.tagName + (e.className ? '.' + e.className : ''));
-  return JSON.stringify({rows, images: images.length, broken, cards,
+    const box = e.getBoundingClientRect();
+    return box.width > 0 && box.right > window.innerWidth + 1;
+  }).map(e => e.tagName + (e.className ? '.' + e.className : '') + (e.id ? '#' + e.id : ''));
+  if (document.documentElement.scrollWidth > window.innerWidth + 1) wide.unshift('the page');
+  const map = document.querySelector('img.map');
+  const labels = map && map.dataset.labelBoxes ? map.dataset.labelBoxes.split(';')
+      .filter(b => b).map(b => b.split(',').map(Number)) : [];
+  return JSON.stringify({rows, images: images.length, broken, cards, labels,
                          sections: [...document.querySelectorAll('h2')].map(h => h.textContent),
                          wide: wide.slice(0, 5), height: document.documentElement.scrollHeight});
 })()"""
@@ -144,6 +153,23 @@ def screenshot(browser, session, file, width):
     file.write_bytes(base64.b64decode(result["data"]))
 
 
+def page_fill(pdf):
+    """Per page, the share of the page's height between its first and last row of ink."""
+    with tempfile.TemporaryDirectory() as folder:
+        subprocess.run(["pdftoppm", "-r", "24", "-gray", str(pdf), folder + "/page"], check=True)
+        fills = []
+        for page in sorted(pathlib.Path(folder).glob("page-*.pgm")):
+            data = page.read_bytes()
+            # binary PGM: "P5\n<w> <h>\n255\n" then the pixels
+            header = data.split(b"\n", 3)
+            width, height = map(int, header[1].split())
+            pixels = header[3]
+            inked = [r for r in range(height)
+                     if min(pixels[r * width:(r + 1) * width]) < 200]
+            fills.append((inked[-1] - inked[0] + 1) / height if inked else 0.0)
+        return fills
+
+
 def number(text):
     return float("".join(c for c in text if c.isdigit() or c == "."))
 
@@ -167,18 +193,18 @@ def main():
                                {"targetId": target, "flatten": True})["sessionId"]
         for domain in ("Page", "Runtime", "Log", "Network"):
             browser.send(domain + ".enable", session=session)
-        set_viewport(browser, session, 1200, 900, False)
+        set_viewport(browser, session, 1280, 900, False)
         browser.events.clear()
         browser.send("Page.navigate", {"url": index.resolve().as_uri()}, session)
         browser.wait_for("Page.loadEventFired")
         time.sleep(0.5)  # late console messages
 
         facts = page_facts(browser, session)
-        screenshot(browser, session, out / "desktop.png", 1200)
+        screenshot(browser, session, out / "desktop.png", 1280)
         set_viewport(browser, session, 390, 844, True)
         phone = page_facts(browser, session)
         screenshot(browser, session, out / "phone.png", 390)
-        set_viewport(browser, session, 1200, 900, False)
+        set_viewport(browser, session, 1280, 900, False)
         pdf = base64.b64decode(browser.send("Page.printToPDF", {"preferCSSPageSize": True},
                                             session)["data"])
         (out / "report.pdf").write_bytes(pdf)
@@ -224,13 +250,25 @@ def main():
             failures.append("printed pages are not A4 (595 x 842 pt)")
         if not 1 <= pages <= 12:
             failures.append(f"prints on {pages} pages")
+        labels = facts["labels"]
+        if len(labels) != hotspots:
+            failures.append(f"{len(labels)} hotspot numbers on the map, {hotspots} hotspots")
+        for i, (ax, ay, aw, ah) in enumerate(labels):
+            for j, (bx, by, bw, bh) in enumerate(labels[:i]):
+                if ax < bx + bw and bx < ax + aw and ay < by + bh and by < ay + ah:
+                    failures.append(f"hotspot numbers {j + 1} and {i + 1} cover each other")
+        fills = page_fill(out / "report.pdf")
+        for page, fill in enumerate(fills, 1):
+            if fill < 0.25:
+                failures.append(f"printed page {page} of {len(fills)} is {fill:.0%} full")
     finally:
         browser.close()
 
     for failure in failures:
         print("check-report: " + failure, file=sys.stderr)
     print(f"check-report: {index}: {facts['rows']} hotspot rows, {facts['images']} images, "
-          f"{len(requests)} network requests, {pages} A4 pages; screenshots in {out}")
+          f"{len(requests)} network requests, {pages} A4 pages (filled "
+          f"{', '.join(f'{f:.0%}' for f in fills)}); screenshots in {out}")
     return 1 if failures else 0
 
 

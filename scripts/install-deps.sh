@@ -10,7 +10,7 @@ packages=(
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libzstd-dev liblz4-dev
   libgtest-dev libbenchmark-dev libceres-dev libnanoflann-dev ccache
   libproj-dev libtiff-dev libgeotiff-dev libpcl-dev libopenni2-dev
-  python3 chromium nodejs
+  python3 chromium nodejs gdal-bin poppler-utils
 )
 # The interop tests read and write bags with pinned npm packages (tests/interop). Debian's
 # nodejs comes without npm; NodeSource's includes it.

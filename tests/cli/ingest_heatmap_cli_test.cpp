@@ -197,5 +197,73 @@ TEST(IngestHeatmapCli, RunNamesAreNeverEmptyNorSilentlyTwiceAndOutputsNeverAFile
   EXPECT_NE(root.output.find("-o /: holds"), std::string::npos) << root.output;
 }
 
+// The GIS layers say what they show and GDAL 3.6 (Debian 12's, under its QGIS) reads them
+// without a warning: run tracks carry their run's name and start, a heatmap of one class keeps
+// the hotspots of all litter, and a local site's CRS has one name in the GeoPackage and the
+// rasters.
+TEST(IngestHeatmapCli, GisLayersSayWhatTheyShowAndGdalReadsThemQuietly) {
+  ASSERT_EQ(test::RunCommand("command -v ogrinfo gdalinfo").exit_code, 0)
+      << "gdal-bin is a test dependency (scripts/install-deps.sh)";
+  TempDir dir;
+  for (const bool georeferenced : {true, false}) {
+    const auto site = dir / (georeferenced ? "utm.gpkg" : "local.gpkg");
+    ASSERT_EQ(RunLittermap("-q site init " + test::Quote(site) + " --name 'North Park'" +
+                           (georeferenced ? " --crs EPSG:32633 --origin 500000 5000000" : ""))
+                  .exit_code,
+              0);
+    // Four runs along one path: every 4 m three cans and a bottle lie within a metre or two.
+    WriteRun(dir / "week1", 10.0, 1795000000.0, "can");
+    WriteRun(dir / "week2", 11.0, 1795600000.0, "bottle");
+    WriteRun(dir / "week3", 12.0, 1796200000.0, "can");
+    WriteRun(dir / "week4", 9.0, 1796800000.0, "can");
+    for (const char* run : {"week1", "week2", "week3", "week4"}) {
+      ASSERT_EQ(
+          RunLittermap("-q ingest " + test::Quote(site) + " " + test::Quote(dir / run)).exit_code,
+          0);
+    }
+    const std::string maps = test::Quote(dir / "maps");
+    ASSERT_EQ(
+        RunLittermap("-q heatmap " + test::Quote(site) + " -o " + maps + " --force").exit_code, 0);
+    ASSERT_EQ(
+        RunLittermap("-q heatmap " + test::Quote(site) + " -o " + maps + " --force --class can")
+            .exit_code,
+        0);
+    EXPECT_GT(Integer(site, "SELECT count(*) FROM hotspots WHERE filter_class = ''"), 0);
+    EXPECT_GT(Integer(site, "SELECT count(*) FROM hotspots WHERE filter_class = 'can'"), 0);
+    EXPECT_EQ(Integer(site, "SELECT count(*) FROM hotspots WHERE dominant_class = ''"), 0);
+    EXPECT_EQ(Text(site, "SELECT run_name || ' ' || start_utc FROM run_tracks ORDER BY run_id"),
+              "week1 2026-11-18T11:06:40Z");
+    EXPECT_EQ(Integer(site, "PRAGMA user_version"), 10300);
+
+    const test::CommandResult layers = test::RunCommand("ogrinfo -ro -al -so " + test::Quote(site));
+    EXPECT_EQ(layers.exit_code, 0) << layers.output;
+    EXPECT_EQ(layers.output.find("Warning"), std::string::npos) << layers.output;
+    EXPECT_NE(layers.output.find("run_name: String"), std::string::npos) << layers.output;
+    EXPECT_NE(layers.output.find("filter_class: String"), std::string::npos) << layers.output;
+    const test::CommandResult raster =
+        test::RunCommand("gdalinfo " + test::Quote(dir / "maps" / "density.tif"));
+    EXPECT_EQ(raster.exit_code, 0) << raster.output;
+    EXPECT_EQ(raster.output.find("Warning"), std::string::npos) << raster.output;
+    const test::CommandResult effort =
+        test::RunCommand("gdalinfo " + test::Quote(dir / "maps" / "effort.tif"));
+    EXPECT_EQ(effort.exit_code, 0) << effort.output;
+    EXPECT_EQ(effort.output.find("Warning"), std::string::npos) << effort.output;
+    if (georeferenced) {
+      const test::CommandResult geojson =
+          test::RunCommand("ogrinfo -ro -al -so " + test::Quote(dir / "maps" / "items.geojson"));
+      EXPECT_EQ(geojson.exit_code, 0) << geojson.output;
+      EXPECT_EQ(geojson.output.find("Warning"), std::string::npos) << geojson.output;
+      // the last heatmap was of cans: three runs of nine
+      EXPECT_NE(geojson.output.find("Feature Count: 27"), std::string::npos) << geojson.output;
+    }
+    if (!georeferenced) {
+      const std::string name = "littermap site frame: North Park";
+      EXPECT_NE(layers.output.find("ENGCRS[\"" + name), std::string::npos) << layers.output;
+      EXPECT_NE(raster.output.find(name), std::string::npos) << raster.output;
+    }
+    std::filesystem::remove_all(dir / "maps");
+  }
+}
+
 }  // namespace
 }  // namespace littermap

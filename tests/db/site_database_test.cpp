@@ -42,7 +42,7 @@ TEST(SiteDatabase, LocalSiteIsAValidGeoPackage) {
   SiteDatabase site = SiteDatabase::Create(dir / "park.gpkg", Options("North park"));
   SqliteDatabase& sql = site.sql();
   EXPECT_EQ(Integer(sql, "PRAGMA application_id"), 0x47504B47);
-  EXPECT_EQ(Integer(sql, "PRAGMA user_version"), 10400);
+  EXPECT_EQ(Integer(sql, "PRAGMA user_version"), 10300);  // GeoPackage 1.3
   EXPECT_EQ(Text(sql, "PRAGMA integrity_check"), "ok");
   EXPECT_EQ(Text(sql, "PRAGMA foreign_key_check"), "<no row>");
   EXPECT_EQ(Integer(sql, "PRAGMA foreign_keys"), 1);
@@ -271,17 +271,32 @@ TEST(SiteDatabase, AVersionOneSiteIsMigratedOnOpen) {
   const auto file = dir / "park.gpkg";
   {
     SiteDatabase site = SiteDatabase::Create(file, Options("p"));
+    const std::int64_t run_id =
+        site.AddRun({0, "week 1", "d1", 1795000000.0, 1795000600.0, 3, {}, std::nullopt, ""});
+    const PointXY track[] = {{0, 0}, {3, 0}};
+    site.AddRunTrack(run_id, track);
+    // Back to version 1, as littermap wrote it then (declaring GeoPackage 1.4).
     site.sql().Execute("DROP TABLE site_map");
     site.sql().Execute("ALTER TABLE runs DROP COLUMN reconstruction_quality");
+    for (const char* column : {"run_name", "start_utc"}) {
+      site.sql().Execute(std::string("ALTER TABLE run_tracks DROP COLUMN ") + column);
+    }
+    for (const char* column : {"filter_class", "filter_from_utc", "filter_to_utc"}) {
+      site.sql().Execute(std::string("ALTER TABLE hotspots DROP COLUMN ") + column);
+    }
+    site.sql().Execute("PRAGMA user_version = 10400");
     site.sql().Execute("DELETE FROM littermap_schema_version WHERE version > 1");
   }
   SiteDatabase site = SiteDatabase::Open(file);
-  EXPECT_EQ(site.site().schema_version, 3);
+  EXPECT_EQ(site.site().schema_version, 4);
+  EXPECT_EQ(Integer(site.sql(), "PRAGMA user_version"), 10300);
+  EXPECT_EQ(Text(site.sql(), "SELECT run_name || ' ' || start_utc FROM run_tracks"),
+            "week 1 2026-11-18T11:06:40Z");
   EXPECT_TRUE(site.sql().HasTable("site_map"));
   EXPECT_FALSE(site.SiteMap());
   RunRecord run{0, "r", "digest", 1, 2, 3, {}, std::nullopt, R"({"key_frames": 5})"};
   site.AddRun(run);
-  EXPECT_EQ(site.Runs().at(0).reconstruction_quality, run.reconstruction_quality);
+  EXPECT_EQ(site.Runs().back().reconstruction_quality, run.reconstruction_quality);
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -43,6 +45,7 @@ TEST(Hotspots, RanksPeaksAndNamesTheirClass) {
   const std::vector<ClassifiedPoint> items = {
       {{5.5, 14.5}, "can"}, {{15.5, 4.5}, "cup"}, {{15.0, 4.0}, "cup"}, {{15.6, 4.6}, "can"}};
   HotspotOptions options;
+  options.min_items = 1;
   const auto hotspots = FindHotspots(density, -9999.0f, items, options);
   ASSERT_EQ(hotspots.size(), 2u);
   EXPECT_EQ(hotspots[0].rank, 1);
@@ -52,6 +55,48 @@ TEST(Hotspots, RanksPeaksAndNamesTheirClass) {
   EXPECT_EQ(hotspots[0].dominant_class, "cup");
   EXPECT_EQ(hotspots[0].items_nearby, 3);
   EXPECT_EQ(hotspots[1].dominant_class, "can");
+}
+
+// Peaks whose kernels overlap are one place to clean, outlined around both; a place with too
+// few items, or on ground surveyed too rarely, is not called a hotspot.
+TEST(Hotspots, OverlappingPeaksAreOneAreaWithSupport) {
+  GridGeometry grid;
+  grid.max_y_m = 20.0;
+  grid.cell_size_m = 1.0;
+  grid.width = grid.height = 20;
+  Raster density(grid, 0.0f);
+  Raster effort(grid, 3.0f);
+  density.at(4, 10) = 4.0f;   // (4.5, 9.5)
+  density.at(9, 10) = 3.0f;   // (9.5, 9.5): 5 m on, kernels of 3 m overlap
+  density.at(16, 2) = 6.0f;   // (16.5, 17.5): one item only
+  density.at(16, 17) = 7.0f;  // (16.5, 2.5): three items, surveyed once
+  effort.at(16, 17) = 1.0f;
+  const std::vector<ClassifiedPoint> items = {
+      {{4.0, 9.0}, "can"},  {{5.0, 10.0}, "can"}, {{10.0, 9.5}, "bottle"}, {{16.5, 17.5}, "cup"},
+      {{16.0, 2.0}, "cup"}, {{17.0, 2.0}, "cup"}, {{16.5, 3.0}, "cup"}};
+  HotspotOptions options;
+  options.min_items = 3;
+  options.min_effort_surveys = 2;
+  const auto hotspots = FindHotspots(density, -9999.0f, items, options, &effort);
+  ASSERT_EQ(hotspots.size(), 1u);
+  const Hotspot& area = hotspots[0];
+  EXPECT_EQ(area.rank, 1);
+  EXPECT_DOUBLE_EQ(area.crs.x, 4.5);  // the densest point of the area
+  EXPECT_EQ(area.peaks.size(), 2u);
+  EXPECT_EQ(area.items_nearby, 3);
+  EXPECT_EQ(area.items_by_class.at("can"), 2);
+  EXPECT_EQ(area.dominant_class, "can");
+  double min_x = 1e9, max_x = -1e9;
+  for (const db::PointXY& p : area.outline) {
+    min_x = std::min(min_x, p.x);
+    max_x = std::max(max_x, p.x);
+  }
+  EXPECT_NEAR(min_x, 4.5 - 3.0, 0.01);  // around both kernels
+  EXPECT_NEAR(max_x, 9.5 + 3.0, 0.01);
+  // Without the effort gate the densest place (three items, surveyed once) is first.
+  const auto ungated = FindHotspots(density, -9999.0f, items, options);
+  ASSERT_EQ(ungated.size(), 2u);
+  EXPECT_DOUBLE_EQ(ungated[0].crs.y, 2.5);
 }
 
 TEST(Exports, GeoJsonIsRfc7946LonLat) {

@@ -18,6 +18,9 @@ TEST(HeatmapSummary, CountsRunsItemsAndHotspotsAndNamesTheFolder) {
   EXPECT_EQ(HeatmapSummary(result, "week1/maps"),
             "3 runs, 21 items (36 detections), 485 m2 surveyed; peak density 23.83 items per "
             "100 m2 per survey; 10 hotspots; written to week1/maps");
+  result.runs = result.items = result.detections = result.hotspots = 1;
+  EXPECT_EQ(HeatmapSummary(result, "maps").substr(0, 30), "1 run, 1 item (1 detection), 4");
+  EXPECT_NE(HeatmapSummary(result, "maps").find("; 1 hotspot; "), std::string::npos);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -22,7 +23,7 @@ using test::Slurp;
 
 // Occurrences of a plain substring (std::regex recurses per character: the page's base64 images
 // would overflow the stack).
-std::size_t CountOf(const std::string& text, const std::string& needle) {
+std::size_t Occurrences(const std::string& text, const std::string& needle) {
   std::size_t count = 0;
   for (std::size_t at = text.find(needle); at != std::string::npos;
        at = text.find(needle, at + needle.size())) {
@@ -36,6 +37,7 @@ TEST(HtmlReport, IsOneSelfContainedPageThatEscapesNames) {
   db::SiteDatabase site =
       CreateFixtureSite(dir / "park.gpkg", "<script>alert('x')</script> & \"Park\"");
   ReportFilesOptions options;
+  options.figures.hotspot_min_items = 1;  // the fixture's litter lies one or two items per place
   options.html.generated_utc = "2026-11-27 12:00";
   options.html.version = "test";
   const SiteReport report = WriteReportFiles(site, dir / "report", options);
@@ -45,29 +47,55 @@ TEST(HtmlReport, IsOneSelfContainedPageThatEscapesNames) {
   EXPECT_NE(html.find("&lt;script&gt;alert(&#39;x&#39;)&lt;/script&gt; &amp; &quot;Park&quot;"),
             std::string::npos);
   // Nothing to fetch: every image inline, no URL but the SVG namespace.
-  EXPECT_EQ(CountOf(html, "<img "), 1 + report.hotspots.size());
-  EXPECT_EQ(CountOf(html, "src=\"data:image/png;base64,"), 1 + report.hotspots.size());
-  EXPECT_EQ(CountOf(html, "src="), 1 + report.hotspots.size());
-  EXPECT_EQ(CountOf(html, "http://"), CountOf(html, "xmlns=\"http://www.w3.org/2000/svg\""));
-  EXPECT_EQ(CountOf(html, "https://"), 0u);
+  EXPECT_EQ(Occurrences(html, "<img "), 1 + report.hotspots.size());
+  EXPECT_EQ(Occurrences(html, "src=\"data:image/png;base64,"), 1 + report.hotspots.size());
+  EXPECT_EQ(Occurrences(html, "src="), 1 + report.hotspots.size());
+  EXPECT_EQ(Occurrences(html, "http://"),
+            Occurrences(html, "xmlns=\"http://www.w3.org/2000/svg\""));
+  EXPECT_EQ(Occurrences(html, "https://"), 0u);
   for (const char* fetch : {"<link", "<script", "@import", "url(", "<iframe", "<object"}) {
-    EXPECT_EQ(CountOf(html, fetch), 0u) << fetch;
+    EXPECT_EQ(Occurrences(html, fetch), 0u) << fetch;
   }
   // One hotspot row each, every section there, A4 print rules.
-  EXPECT_EQ(CountOf(html, "<img class=\"close-up\""), report.hotspots.size());
+  EXPECT_EQ(Occurrences(html, "<img class=\"close-up\""), report.hotspots.size());
   for (const char* section :
        {"id=\"map\"", "id=\"hotspots\"", "id=\"classes\"", "id=\"change\"", "id=\"quality\""}) {
     EXPECT_NE(html.find(section), std::string::npos) << section;
   }
   EXPECT_NE(html.find("@page { size: A4"), std::string::npos);
   EXPECT_NE(html.find("name=\"viewport\""), std::string::npos);
-  EXPECT_EQ(CountOf(html, "<tr><td>2026-11-"), 3u);  // one row per run in the change table
+  EXPECT_EQ(Occurrences(html, "<tr><td>2026-11-"), 3u);  // one row per run in the change table
+}
+
+// Plain language for park staff: directions instead of signed metres, kinds in lower case
+// mid-sentence, each warning once, the tracking figures folded away, trends with their values.
+TEST(HtmlReport, SpeaksPlainly) {
+  TempDir dir;
+  db::SiteDatabase site = CreateFixtureSite(dir / "park.gpkg", "Park");
+  ReportFilesOptions options;
+  options.figures.hotspot_min_items = 1;  // the fixture's litter lies one or two items per place
+  options.html.generated_utc = "2026-11-27 12:00";
+  options.html.version = "test";
+  WriteReportFiles(site, dir / "report", options);
+  const std::string html = Slurp(dir / "report" / "index.html");
+  EXPECT_EQ(html.find(" m east, "), std::string::npos) << "signed metres east and north";
+  EXPECT_NE(html.find(" of the dock"), std::string::npos);
+  for (std::size_t at = html.find("mostly "); at != std::string::npos;
+       at = html.find("mostly ", at + 1)) {
+    EXPECT_TRUE(std::islower(static_cast<unsigned char>(html[at + 7]))) << html.substr(at, 30);
+  }
+  EXPECT_EQ(Occurrences(html, "<details><summary>Technical details</summary>"), 1u);
+  EXPECT_LE(Occurrences(html, "<ul class=\"warnings\">"), 1u);
+  EXPECT_NE(html.find("<ul class=\"certainty\">"), std::string::npos);
+  EXPECT_EQ(Occurrences(html, "<line class=\"base\""), Occurrences(html, "<svg class=\"spark\""));
 }
 
 TEST(HtmlReport, ReportJsonCarriesTheSameFigures) {
   TempDir dir;
   db::SiteDatabase site = CreateFixtureSite(dir / "park.gpkg", "Park");
-  const SiteReport report = WriteReportFiles(site, dir / "report", {});
+  ReportFilesOptions options;
+  options.figures.hotspot_min_items = 1;  // the fixture's litter lies one or two items per place
+  const SiteReport report = WriteReportFiles(site, dir / "report", options);
   const auto json = nlohmann::json::parse(Slurp(dir / "report" / "report.json"));
   EXPECT_EQ(json["site"]["name"], "Park");
   EXPECT_TRUE(json["site"]["epsg_code"].is_null());
@@ -81,6 +109,7 @@ TEST(HtmlReport, ReportJsonCarriesTheSameFigures) {
   EXPECT_EQ(json["runs"][0]["start"]["utc"], "2026-11-01T09:20:00Z");
   EXPECT_EQ(json["runs"][0]["reconstruction"]["routines"]["odometry-only"], 20);
   ASSERT_EQ(json["hotspots"].size(), report.hotspots.size());
+  ASSERT_FALSE(report.hotspots.empty());
   EXPECT_EQ(json["hotspots"][0]["rank"], 1);
   EXPECT_DOUBLE_EQ(json["hotspots"][0]["density_per_100m2"].get<double>(),
                    report.hotspots[0].density_per_100m2);

@@ -106,7 +106,7 @@ TEST_F(SurveyTest, SkipsTheStagesUpToDateAndRunsTheOthers) {
             0u)
       << printed_[4];
   EXPECT_EQ(printed_[5], "[4/5 heatmap]");
-  EXPECT_EQ(printed_[6].rfind("1 runs, 3 items (3 detections), ", 0), 0u) << printed_[6];
+  EXPECT_EQ(printed_[6].rfind("1 run, 3 items (3 detections), ", 0), 0u) << printed_[6];
   EXPECT_EQ(printed_[7], "[5/5 report]");
   EXPECT_EQ(printed_[8],
             "wrote " + (dir_ / "out" / "report" / "index.html").string() + " and report.json");
