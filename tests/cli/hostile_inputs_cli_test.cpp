@@ -32,6 +32,16 @@ void ExpectRefused(const std::string& arguments, int exit_code, const std::strin
                                                                     << result.output;
 }
 
+// A short run of the sample park simulated into DIR/bag.
+std::filesystem::path SimulatedBag(const TempDir& dir, const char* duration_s) {
+  const std::filesystem::path bag = dir / "bag";
+  EXPECT_EQ(RunLittermap("-q simulate " + Quote(test::SampleWorld()) + " -o " + Quote(bag) +
+                         " --truth " + Quote(dir / "truth") + " --duration " + duration_s)
+                .exit_code,
+            0);
+  return bag;
+}
+
 TEST(HostileInputsCli, SiteOriginsMustBeFiniteAndInTheirCrsArea) {
   TempDir dir;
   ExpectRefused("site init " + Quote(dir / "a.gpkg") +
@@ -56,11 +66,8 @@ TEST(HostileInputsCli, SiteOriginsMustBeFiniteAndInTheirCrsArea) {
 // by libpng itself).
 TEST(HostileInputsCli, AnImageThatDoesNotDecodeIsNamedByTopicAndMessage) {
   TempDir dir;
-  const std::filesystem::path bag = dir / "bag";
-  ASSERT_EQ(RunLittermap("-q simulate " + Quote(test::SampleWorld()) + " -o " + Quote(bag) +
-                         " --truth " + Quote(dir / "truth") + " --duration 3")
-                .exit_code,
-            0);
+  const std::filesystem::path bag = SimulatedBag(dir, "3");
+  ASSERT_TRUE(std::filesystem::exists(bag / "bag_0.db3"));
   {
     // 64 zero bytes in the middle of the third depth message: inside its PNG's compressed data.
     SqliteDatabase database(bag / "bag_0.db3", SqliteDatabase::Mode::kReadWrite);
@@ -248,11 +255,8 @@ TEST(HostileInputsCli, OutputsGoWhereTheyBelong) {
 // reconstructed zero poses with exit 0.
 TEST(HostileInputsCli, ATopicOfTheWrongTypeIsNamed) {
   TempDir dir;
-  const std::filesystem::path bag = dir / "bag";
-  ASSERT_EQ(RunLittermap("-q simulate " + Quote(test::SampleWorld()) + " -o " + Quote(bag) +
-                         " --truth " + Quote(dir / "truth") + " --duration 0.5")
-                .exit_code,
-            0);
+  const std::filesystem::path bag = SimulatedBag(dir, "0.5");
+  ASSERT_TRUE(std::filesystem::exists(bag / "bag_0.db3"));
   {
     SqliteDatabase database(bag / "bag_0.db3", SqliteDatabase::Mode::kReadWrite);
     database.Execute("UPDATE topics SET type = 'sensor_msgs/msg/Imu' WHERE name = '/scan'");

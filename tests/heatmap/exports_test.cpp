@@ -32,11 +32,17 @@ TEST(Wgs84Transform, UtmCentralMeridianOnTheEquator) {
   EXPECT_NEAR(north.lat_deg, 1000.0 / 110574.0, 1e-5);
 }
 
-TEST(Hotspots, RanksPeaksAndNamesTheirClass) {
+// 20 x 20 cells of 1 m, (0, 0) to (20, 20).
+GridGeometry MetreGrid20() {
   GridGeometry grid;
   grid.max_y_m = 20.0;
   grid.cell_size_m = 1.0;
   grid.width = grid.height = 20;
+  return grid;
+}
+
+TEST(Hotspots, RanksPeaksAndNamesTheirClass) {
+  const GridGeometry grid = MetreGrid20();
   Raster density(grid, 0.0f);
   density.at(5, 5) = 3.0f;
   density.at(6, 5) = 2.0f;  // shoulder of the first peak, not a peak itself
@@ -60,10 +66,7 @@ TEST(Hotspots, RanksPeaksAndNamesTheirClass) {
 // Peaks whose kernels overlap are one place to clean, outlined around both; a place with too
 // few items, or on ground surveyed too rarely, is not called a hotspot.
 TEST(Hotspots, OverlappingPeaksAreOneAreaWithSupport) {
-  GridGeometry grid;
-  grid.max_y_m = 20.0;
-  grid.cell_size_m = 1.0;
-  grid.width = grid.height = 20;
+  const GridGeometry grid = MetreGrid20();
   Raster density(grid, 0.0f);
   Raster effort(grid, 3.0f);
   density.at(4, 10) = 4.0f;   // (4.5, 9.5)
