@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <fstream>
 #include <map>
+#include <optional>
 
 #include "bag/mcap_records.hpp"
 #include "bag/storage_file.hpp"
@@ -69,14 +70,28 @@ void BagReader::Impl::LocateFiles(const std::filesystem::path& path) {
   if (std::filesystem::is_regular_file(path, error)) {
     // One file of a bag whose metadata.yaml lists it: the bag is its folder (read alone, its
     // figures would look rebuilt, as after a crash).
+    // When the folder's metadata.yaml is unreadable or names a file that is missing, the file
+    // is read alone, as before.
     const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : ".";
     if (std::filesystem::is_regular_file(folder / "metadata.yaml", error)) {
-      const BagInfo listed = ReadMetadataYaml(folder / "metadata.yaml");
-      for (const BagFileInfo& file : listed.files) {
-        if (file.relative_path == path.filename().string()) {
-          LocateFiles(folder);
-          return;
-        }
+      std::optional<BagInfo> listed;
+      try {
+        listed = ReadMetadataYaml(folder / "metadata.yaml");
+      } catch (const Error&) {
+      }
+      const auto lists = [&](const std::string& name) {
+        return listed &&
+               std::any_of(listed->files.begin(), listed->files.end(),
+                           [&](const BagFileInfo& file) { return file.relative_path == name; });
+      };
+      const bool complete =
+          listed &&
+          std::all_of(listed->files.begin(), listed->files.end(), [&](const BagFileInfo& file) {
+            return std::filesystem::exists(folder / file.relative_path, error);
+          });
+      if (lists(path.filename().string()) && complete) {
+        LocateFiles(folder);
+        return;
       }
     }
     directory = path.parent_path();

@@ -240,6 +240,8 @@ SqliteStatement SqliteDatabase::Prepare(std::string_view sql) const {
 
 std::int64_t SqliteDatabase::LastInsertId() const { return sqlite3_last_insert_rowid(db_); }
 
+int SqliteDatabase::Changes() const { return sqlite3_changes(db_); }
+
 bool SqliteDatabase::HasTable(std::string_view table) const {
   SqliteStatement query(db_, "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = ?",
                         file_);

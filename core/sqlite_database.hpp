@@ -86,6 +86,7 @@ class SqliteDatabase {
   void Execute(std::string_view sql);
   SqliteStatement Prepare(std::string_view sql) const;
   std::int64_t LastInsertId() const;
+  int Changes() const;  // rows the last INSERT, UPDATE or DELETE changed
   bool HasTable(std::string_view table) const;
   bool HasColumn(std::string_view table, std::string_view column) const;
   const std::filesystem::path& file() const { return file_; }

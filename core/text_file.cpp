@@ -30,8 +30,9 @@ std::string ReadTextFile(const std::filesystem::path& path, std::uintmax_t max_b
   if (!in) throw FileFailure(path, "cannot open", errno);
   std::string text(static_cast<std::size_t>(size), '\0');
   in.read(text.data(), static_cast<std::streamsize>(size));
+  if (in.bad()) throw FileFailure(path, "cannot read", errno);
   if (in.gcount() != static_cast<std::streamsize>(size)) {
-    throw FileFailure(path, "cannot read", errno);
+    throw BadInputError(path.string() + ": changed while it was read");
   }
   return text;
 }

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <ctime>
+#include <regex>
 
 #include "core/error.hpp"
 
@@ -9,6 +10,12 @@ namespace littermap {
 
 std::optional<double> ParseUtcDate(const std::string& text, const char* option) {
   if (text.empty()) return std::nullopt;
+  // sscanf's %d skips blanks and takes signs: the layout is checked first.
+  static const std::regex kLayout(R"(\d{4}-\d{2}-\d{2}([T ]\d{2}:\d{2}(:\d{2})?)?)");
+  if (!std::regex_match(text, kLayout)) {
+    throw UsageError(std::string(option) + " " + text +
+                     ": expected a UTC date YYYY-MM-DD or YYYY-MM-DDTHH:MM[:SS]");
+  }
   std::tm date{};
   char separator = 0;
   int used = -1;

@@ -99,7 +99,7 @@ struct CoverageRecord {
 // Which items a set of hotspots was computed from ('' for any class, date or period).
 struct HotspotFilter {
   std::string class_name;
-  std::string from_utc;  // runs starting on or after, as the user gave it
+  std::string from_utc;  // runs starting on or after, YYYY-MM-DDTHH:MM:SSZ
   std::string to_utc;    // runs starting before
 };
 

@@ -128,7 +128,8 @@ ALTER TABLE runs ADD COLUMN reconstruction_quality TEXT;
 
 // Version 4: GIS layers that say what they show. Each run track carries its run's name and start
 // (UTC); hotspots keep one set per heatmap filter (class, from, to; '' is "any"), so a heatmap
-// of one class no longer replaces the site's hotspots of all litter. The file declares
+// of one class no longer replaces the site's hotspots of all litter (the old rows, whose filter
+// is not known, go; the next heatmap computes them again). The file declares
 // GeoPackage 1.3 (sites made before declared 1.4, which GDAL 3.6 warns about).
 constexpr const char* kVersion4 = R"sql(
 ALTER TABLE run_tracks ADD COLUMN run_name TEXT;
@@ -137,6 +138,7 @@ UPDATE run_tracks SET
   run_name = (SELECT name FROM runs WHERE runs.run_id = run_tracks.run_id),
   start_utc = (SELECT strftime('%Y-%m-%dT%H:%M:%SZ', start_time_s, 'unixepoch') FROM runs
                WHERE runs.run_id = run_tracks.run_id);
+DELETE FROM hotspots;
 ALTER TABLE hotspots ADD COLUMN filter_class TEXT NOT NULL DEFAULT '';
 ALTER TABLE hotspots ADD COLUMN filter_from_utc TEXT NOT NULL DEFAULT '';
 ALTER TABLE hotspots ADD COLUMN filter_to_utc TEXT NOT NULL DEFAULT '';

@@ -142,6 +142,10 @@ void SiteDatabase::AddRunTrack(std::int64_t run_id, std::span<const PointXY> sit
   insert.Bind(3, static_cast<std::int64_t>(site_points.size()));
   insert.BindReal(4, PathLength(site_points));
   insert.Run();
+  if (database_.Changes() != 1) {
+    throw InternalError("run track of run " + std::to_string(run_id) +
+                        ", which is not in the site");
+  }
   ExtendContentsBounds(database_, "run_tracks", EnvelopeOf(crs_points));
 }
 

@@ -65,18 +65,20 @@ std::vector<std::vector<std::size_t>> MergeOverlapping(const std::vector<Peak>& 
 
 std::vector<db::PointXY> Outline(const std::vector<db::PointXY>& peaks, double radius_m) {
   constexpr int kSides = 24;
-  std::vector<cv::Point2d> points;
+  // Relative to the first peak: cv::convexHull works in float, too coarse for UTM coordinates.
+  const db::PointXY origin = peaks.front();
+  std::vector<cv::Point2f> points;
   for (const db::PointXY& p : peaks) {
     for (int k = 0; k < kSides; ++k) {
       const double angle = 2 * std::numbers::pi * k / kSides;
-      points.emplace_back(p.x + radius_m * std::cos(angle), p.y + radius_m * std::sin(angle));
+      points.emplace_back(static_cast<float>(p.x - origin.x + radius_m * std::cos(angle)),
+                          static_cast<float>(p.y - origin.y + radius_m * std::sin(angle)));
     }
   }
-  std::vector<cv::Point2f> points_f(points.begin(), points.end());
   std::vector<cv::Point2f> hull;
-  cv::convexHull(points_f, hull, /*clockwise=*/false);
+  cv::convexHull(points, hull, /*clockwise=*/false);
   std::vector<db::PointXY> outline;
-  for (const cv::Point2f& p : hull) outline.push_back({p.x, p.y});
+  for (const cv::Point2f& p : hull) outline.push_back({origin.x + p.x, origin.y + p.y});
   return outline;
 }
 
@@ -114,11 +116,20 @@ std::vector<Hotspot> FindHotspots(const Raster& all_density, float nodata,
       peaks.push_back({{grid.CellCenterX(c), grid.CellCenterY(r)}, value});
     }
   }
+  // An item found where the runs rarely looked is no support either.
+  const auto WellSurveyed = [&](const db::PointXY& crs) {
+    if (effort == nullptr) return true;
+    const int c = static_cast<int>(std::floor((crs.x - grid.min_x_m) / grid.cell_size_m));
+    const int r = static_cast<int>(std::floor((grid.max_y_m - crs.y) / grid.cell_size_m));
+    if (c < 0 || r < 0 || c >= grid.width || r >= grid.height) return false;
+    return effort->at(c, r) >= options.min_effort_surveys;
+  };
   std::stable_sort(peaks.begin(), peaks.end(), [](const Peak& a, const Peak& b) {
     return a.density_per_100m2 > b.density_per_100m2;
   });
 
   std::vector<Hotspot> hotspots;
+  if (options.max_count <= 0) return hotspots;
   for (const std::vector<std::size_t>& area : MergeOverlapping(peaks, options.separation_m)) {
     const Peak& densest = peaks[area.front()];
     Hotspot hotspot;
@@ -129,7 +140,7 @@ std::vector<Hotspot> FindHotspots(const Raster& all_density, float nodata,
       const bool near = std::any_of(hotspot.peaks.begin(), hotspot.peaks.end(), [&](auto& p) {
         return Distance(item.crs, p) <= options.separation_m;
       });
-      if (!near) continue;
+      if (!near || !WellSurveyed(item.crs)) continue;
       ++hotspot.items_by_class[item.class_name];
       ++hotspot.items_nearby;
     }

@@ -73,8 +73,8 @@ OccupancyImage ReadOccupancyMap(const std::filesystem::path& yaml_path) {
   } catch (const YAML::Exception& e) {
     throw BadInputError(yaml_path.string() + ": " + e.what());
   }
-  if (!(map.resolution_m > 0) || !std::isfinite(map.resolution_m))
-    throw BadInputError(yaml_path.string() + ": 'resolution' must be a finite number > 0");
+  if (!(map.resolution_m >= 0.001 && map.resolution_m <= 100))
+    throw BadInputError(yaml_path.string() + ": 'resolution' must be from 0.001 to 100 m");
   if (!std::isfinite(map.origin_x_m) || !std::isfinite(map.origin_y_m))
     throw BadInputError(yaml_path.string() + ": 'origin' must be finite numbers");
   if (image.is_relative()) image = yaml_path.parent_path() / image;

@@ -206,7 +206,9 @@ void KeyFigures(const SiteReport& report, std::string& html) {
             ": " + Fixed(top.density_per_100m2, 1) + " items per 100 m² each survey, mostly " +
             EscapeHtml(StyleOf(top.dominant_class).many) + ". ";
   } else {
-    html += "No litter hotspot: no litter was found. ";
+    html += report.items == 0 ? "No litter hotspot: no litter was found. "
+                              : "No place has enough litter, surveyed often enough, to be a "
+                                "hotspot. ";
   }
   if (latest) {
     html += "The latest run (" + EscapeHtml(latest->name) + ", " + Date(latest->start_time_s) +

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 
 #include <opencv2/imgcodecs.hpp>
@@ -83,47 +84,75 @@ void DrawItems(cv::Mat& image, const SiteReport& report, const PixelMapping& to_
   }
 }
 
-constexpr int kLabelRadiusPx = 13;
+constexpr int kLabelHeightPx = 26;
+constexpr double kLabelFontScale = 0.55;
+
+// A hotspot's number as a pill: wide enough for its digits.
+cv::Size LabelSize(const std::string& text) {
+  int baseline = 0;
+  const cv::Size text_size =
+      cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, kLabelFontScale, 2, &baseline);
+  return {std::max(kLabelHeightPx, text_size.width + 12), kLabelHeightPx};
+}
+
+bool Free(const cv::Rect& box, const cv::Rect& map, const std::vector<cv::Rect>& taken) {
+  return (box & map) == box && std::none_of(taken.begin(), taken.end(), [&](const cv::Rect& other) {
+           return (box & other).area() > 0;
+         });
+}
 
 // Where a hotspot's number goes: beside its outline, in the first of eight directions (north-east
 // first) and rings outwards where its box covers no box placed before (numbers of denser
-// hotspots, the north arrow, the scale bar) and stays on the map.
+// hotspots, the north arrow, the scale bar) and stays on the map; failing that, the free place
+// nearest the hotspot anywhere on the map. `anchor`: the outline point a leader line starts at.
 cv::Rect PlaceLabel(const cv::Mat& image, cv::Point centre, const std::vector<cv::Point>& outline,
-                    const std::vector<cv::Rect>& taken, cv::Point* anchor) {
-  constexpr int kSize = 2 * kLabelRadiusPx + 2;
+                    cv::Size size, const std::vector<cv::Rect>& taken, cv::Point* anchor) {
   const cv::Rect map(0, 0, image.cols, image.rows);
-  cv::Rect fallback;
+  const auto box_at = [&](cv::Point at) {
+    return cv::Rect(at.x - size.width / 2, at.y - size.height / 2, size.width, size.height);
+  };
+  const auto nearest_outline_point = [&](cv::Point at) {
+    cv::Point best = centre;
+    double best_distance = 1e18;
+    for (const cv::Point& p : outline) {
+      const double d = cv::norm(p - at);
+      if (d < best_distance) {
+        best_distance = d;
+        best = p;
+      }
+    }
+    return best;
+  };
+  const double reach = std::hypot(size.width, size.height) / 2 + 3;
   for (int ring = 0; ring < 8; ++ring) {
     for (int k = 0; k < 8; ++k) {
       const double angle = std::numbers::pi / 4 - k * std::numbers::pi / 4;  // NE, E, SE, ...
       const cv::Point2d direction(std::cos(angle), -std::sin(angle));        // image y is down
       double extent = 0;  // how far the outline reaches in this direction
-      cv::Point edge = centre;
-      for (const cv::Point& p : outline) {
-        const double along = cv::Point2d(p - centre).dot(direction);
-        if (along > extent) {
-          extent = along;
-          edge = p;
-        }
-      }
-      const double distance = extent + kLabelRadiusPx + 3 + ring * (kSize + 4);
+      for (const cv::Point& p : outline)
+        extent = std::max(extent, cv::Point2d(p - centre).dot(direction));
+      const double distance = extent + reach + ring * (size.height + 4);
       const cv::Point at(static_cast<int>(std::lround(centre.x + distance * direction.x)),
                          static_cast<int>(std::lround(centre.y + distance * direction.y)));
-      const cv::Rect box(at.x - kSize / 2, at.y - kSize / 2, kSize, kSize);
-      if (ring == 0 && k == 0) {
-        fallback = box;
-        *anchor = edge;
+      if (Free(box_at(at), map, taken)) {
+        *anchor = nearest_outline_point(at);
+        return box_at(at);
       }
-      if ((box & map) != box) continue;
-      const bool free = std::none_of(taken.begin(), taken.end(), [&](const cv::Rect& other) {
-        return (box & other).area() > 0;
-      });
-      if (!free) continue;
-      *anchor = edge;
-      return box;
     }
   }
-  return fallback;
+  std::optional<cv::Point> best;
+  for (int y = size.height / 2; y < image.rows - size.height / 2; y += 4) {
+    for (int x = size.width / 2; x < image.cols - size.width / 2; x += 4) {
+      const cv::Point at(x, y);
+      if ((!best || cv::norm(at - centre) < cv::norm(*best - centre)) &&
+          Free(box_at(at), map, taken)) {
+        best = at;
+      }
+    }
+  }
+  const cv::Point at = best.value_or(centre);  // a map full of numbers: on the hotspot itself
+  *anchor = nearest_outline_point(at);
+  return box_at(at);
 }
 
 std::vector<cv::Rect> DrawHotspots(cv::Mat& image, const SiteReport& report,
@@ -140,17 +169,26 @@ std::vector<cv::Rect> DrawHotspots(cv::Mat& image, const SiteReport& report,
   std::vector<cv::Rect> labels;
   for (std::size_t i = 0; i < report.hotspots.size(); ++i) {
     const HotspotFigures& h = report.hotspots[i];
+    const std::string rank = std::to_string(h.rank);
+    const cv::Size size = LabelSize(rank);
     cv::Point anchor;
-    const cv::Rect box = PlaceLabel(image, to_pixel(h.crs), outlines[i], taken, &anchor);
+    const cv::Rect box = PlaceLabel(image, to_pixel(h.crs), outlines[i], size, taken, &anchor);
     const cv::Point centre(box.x + box.width / 2, box.y + box.height / 2);
-    if (cv::norm(centre - anchor) > kLabelRadiusPx + 6) {  // set apart: a leader line
+    if (cv::norm(centre - anchor) > kLabelHeightPx) {  // set apart: a leader line
       cv::line(image, anchor, centre, kWhite, 3, cv::LINE_AA);
       cv::line(image, anchor, centre, kInk, 1, cv::LINE_AA);
     }
-    const std::string rank = std::to_string(h.rank);
-    cv::circle(image, centre, kLabelRadiusPx, kInk, cv::FILLED, cv::LINE_AA);
-    cv::putText(image, rank, centre + cv::Point(rank.size() > 1 ? -10 : -5, 6),
-                cv::FONT_HERSHEY_SIMPLEX, 0.55, kWhite, 2, cv::LINE_AA);
+    const int radius = kLabelHeightPx / 2 - 1;
+    const cv::Point left(box.x + radius + 1, centre.y), right(box.br().x - radius - 1, centre.y);
+    cv::rectangle(image, left - cv::Point(0, radius), right + cv::Point(0, radius), kInk,
+                  cv::FILLED);
+    cv::circle(image, left, radius, kInk, cv::FILLED, cv::LINE_AA);
+    cv::circle(image, right, radius, kInk, cv::FILLED, cv::LINE_AA);
+    int baseline = 0;
+    const cv::Size text =
+        cv::getTextSize(rank, cv::FONT_HERSHEY_SIMPLEX, kLabelFontScale, 2, &baseline);
+    cv::putText(image, rank, centre + cv::Point(-text.width / 2, text.height / 2),
+                cv::FONT_HERSHEY_SIMPLEX, kLabelFontScale, kWhite, 2, cv::LINE_AA);
     taken.push_back(box);
     labels.push_back(box);
   }

@@ -23,7 +23,8 @@ struct SiteMapFigure {
   double metres_per_pixel = 0.0;
   float peak_density_per_100m2 = 0.0f;  // the top of the colour scale
   // Where each hotspot's number was put on the map, in rank order: none covers another, the
-  // north arrow or the scale bar (a leader line joins a number set apart to its outline).
+  // north arrow or the scale bar while the map has room for them (a leader line joins a number
+  // set apart to its outline).
   std::vector<cv::Rect> label_boxes;
 };
 

@@ -20,7 +20,8 @@ TEST(UtcDate, ReadsDatesAndTimesAsUtc) {
 TEST(UtcDate, RefusesDaysAndTimesThatDoNotExist) {
   for (const char* text :
        {"2026-02-30", "2025-02-29", "2026-04-31", "2026-13-01", "2026-00-10", "2026-11-22T24:00",
-        "2026-11-22T12:60", "2026-11-22T-1:00", "22.11.2026", "2026-11-22T12:00Z"}) {
+        "2026-11-22T12:60", "2026-11-22T-1:00", "22.11.2026", "2026-11-22T12:00Z", " 2026-11-22",
+        "2026-11-22T 9:05", "2026-+1-22", "2026-11-22T-0:00"}) {
     try {
       ParseUtcDate(text, "--start-time");
       ADD_FAILURE() << text << " was accepted";

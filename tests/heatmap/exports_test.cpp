@@ -100,6 +100,8 @@ TEST(Hotspots, OverlappingPeaksAreOneAreaWithSupport) {
   const auto ungated = FindHotspots(density, -9999.0f, items, options);
   ASSERT_EQ(ungated.size(), 2u);
   EXPECT_DOUBLE_EQ(ungated[0].crs.y, 2.5);
+  options.max_count = 0;
+  EXPECT_TRUE(FindHotspots(density, -9999.0f, items, options).empty());
 }
 
 TEST(Exports, GeoJsonIsRfc7946LonLat) {

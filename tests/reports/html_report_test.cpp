@@ -11,6 +11,7 @@
 
 #include "reports/fixture_site.hpp"
 #include "reports/report_files.hpp"
+#include "reports/site_map_figure.hpp"
 #include "support/temp_dir.hpp"
 #include "support/test_files.hpp"
 
@@ -88,6 +89,28 @@ TEST(HtmlReport, SpeaksPlainly) {
   EXPECT_LE(Occurrences(html, "<ul class=\"warnings\">"), 1u);
   EXPECT_NE(html.find("<ul class=\"certainty\">"), std::string::npos);
   EXPECT_EQ(Occurrences(html, "<line class=\"base\""), Occurrences(html, "<svg class=\"spark\""));
+}
+
+// The hotspot numbers on the map cover none of each other, however close the hotspots: here
+// every place with one item is a hotspot, several of them a few metres apart.
+TEST(HtmlReport, HotspotNumbersCoverNoOther) {
+  TempDir dir;
+  db::SiteDatabase site = CreateFixtureSite(dir / "park.gpkg", "Park");
+  SiteReportOptions options;
+  options.hotspot_min_items = 1;
+  options.heatmap.density.kernel.bandwidth_m = 1.0;  // more, smaller hotspots
+  const SiteReport report = BuildSiteReport(site, options);
+  ASSERT_GE(report.hotspots.size(), 3u);
+  const SiteMapFigure figure = DrawSiteMap(report, {});
+  ASSERT_EQ(figure.label_boxes.size(), report.hotspots.size());
+  const cv::Rect map(0, 0, figure.map.cols, figure.map.rows);
+  for (std::size_t i = 0; i < figure.label_boxes.size(); ++i) {
+    const cv::Rect& box = figure.label_boxes[i];
+    EXPECT_EQ(box & map, box) << "number " << i + 1 << " leaves the map";
+    for (std::size_t j = 0; j < i; ++j) {
+      EXPECT_EQ((box & figure.label_boxes[j]).area(), 0) << j + 1 << " and " << i + 1;
+    }
+  }
 }
 
 TEST(HtmlReport, ReportJsonCarriesTheSameFigures) {
