@@ -140,12 +140,13 @@ std::string IngestSummary(const RunDirectoryIngestResult& result,
     return text + "Run " + result.name + " is already in " + site_file.string() + " as run " +
            std::to_string(run.run_id) + "; nothing changed";
   }
+  const auto s = [](std::size_t n) { return n == 1 ? "" : "s"; };
   char figures[256];
   std::snprintf(figures, sizeof figures,
-                "': %zu poses, %.1f m driven, %.0f m2 observed, %zu detections (%zu new items, "
+                "': %zu pose%s, %.1f m driven, %.0f m2 observed, %zu detection%s (%zu new item%s, "
                 "%zu seen again",
-                run.poses, run.length_m, run.observed_area_m2, run.detections, run.new_items,
-                run.items_seen_again);
+                run.poses, s(run.poses), run.length_m, run.observed_area_m2, run.detections,
+                s(run.detections), run.new_items, s(run.new_items), run.items_seen_again);
   text += "Ingested run " + std::to_string(run.run_id) + " '" + result.name + figures;
   if (result.simulator_truth) {
     text += ", " + std::to_string(run.items_unobserved) + " outside the camera coverage skipped";

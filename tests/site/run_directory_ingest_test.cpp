@@ -89,6 +89,12 @@ TEST_F(RunDirectoryIngestTest, RefusesOtherResultsUnderANameInUse) {
   EXPECT_THROW(IngestRunDirectory(site_, dir_ / "b" / "run", options), BadInputError);
 }
 
+TEST_F(RunDirectoryIngestTest, OneOfAThingIsSingular) {
+  WriteRun(dir_ / "one", 1);
+  const std::string summary = IngestSummary(IngestRunDirectory(site_, dir_ / "one", {}), site_);
+  EXPECT_NE(summary.find(" 1 detection (1 new item, 0 seen again)"), std::string::npos) << summary;
+}
+
 TEST_F(RunDirectoryIngestTest, CountsTheTruthItemsOutsideTheCameraCoverage) {
   WriteRun(dir_ / "truth", 2, "litter.csv");
   std::ofstream(dir_ / "truth" / "litter.csv", std::ios::app) << "3,can,10,40,0,0.1\n";
