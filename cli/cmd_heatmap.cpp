@@ -57,7 +57,7 @@ void RegisterHeatmapCommand(CLI::App& app, CliContext& context) {
   command
       ->add_option("--hotspot-min-items", arguments->options.hotspots.min_items,
                    "Distinct items a place needs to be called a hotspot")
-      ->check(WholeNumber(1, 1000));
+      ->check(WholeNumber(1, kMaxHotspotMinItems));
   command
       ->add_option("--hotspots", arguments->options.hotspots.max_count, "Number of hotspots listed")
       ->check(CLI::Range(0, kMaxHotspots));

@@ -48,7 +48,7 @@ void RegisterReportCommand(CLI::App& app, CliContext& context) {
   command
       ->add_option("--hotspot-min-items", figures.hotspot_min_items,
                    "Distinct items a place needs to be called a hotspot")
-      ->check(WholeNumber(1, 1000));
+      ->check(WholeNumber(1, kMaxHotspotMinItems));
   command
       ->add_option("--bandwidth", figures.heatmap.density.kernel.bandwidth_m,
                    "Density kernel radius (m), also the hotspot radius")

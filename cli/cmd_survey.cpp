@@ -57,7 +57,7 @@ void RegisterSurveyCommand(CLI::App& app, CliContext& context) {
       ->add_option("--hotspot-min-items", options->hotspot_min_items,
                    "Distinct items a place needs to be called a hotspot")
       ->capture_default_str()
-      ->check(WholeNumber(1, 1000));
+      ->check(WholeNumber(1, kMaxHotspotMinItems));
   command->add_flag("--force", options->force, "Redo every stage, even if up to date");
   AddSensorOptions(command, *sensors);
   command->callback([options, sensors, &context] {

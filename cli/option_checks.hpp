@@ -28,6 +28,7 @@ inline constexpr double kMaxCellSizeM = 100.0;
 inline constexpr double kMinBandwidthM = 0.1;  // heatmap/report --bandwidth
 inline constexpr double kMaxBandwidthM = 100.0;
 inline constexpr int kMaxHotspots = 1000;              // heatmap/report --hotspots
+inline constexpr int kMaxHotspotMinItems = 1000;       // heatmap/report/survey --hotspot-min-items
 inline constexpr double kMaxDurationS = 86400;         // simulate/capture --duration: a day
 inline constexpr std::size_t kMaxFrameStep = 100000;   // detect/train/survey --every
 inline constexpr double kMaxSiteCoordinateM = 100000;  // ingest --initial/--transform: 100 km

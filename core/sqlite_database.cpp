@@ -159,12 +159,12 @@ std::string FileUri(const std::filesystem::path& file) {
   return uri;
 }
 
-// A database that can only be read as immutable: its folder cannot take a -shm file, and no
-// -wal file holds changes that reading without it would miss.
 std::filesystem::path FolderOf(const std::filesystem::path& file) {
   return file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
 }
 
+// A database that can only be read as immutable: its folder cannot take a -shm file, and no
+// -wal file holds changes that reading without it would miss.
 bool ReadableOnlyAsImmutable(const std::filesystem::path& file) {
   const std::filesystem::path folder = FolderOf(file);
   std::error_code error;

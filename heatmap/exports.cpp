@@ -107,7 +107,7 @@ void WriteHotspotsCsv(const std::filesystem::path& file, std::span<const Hotspot
         << Format("%.3f,%.3f", hotspot.crs.x, hotspot.crs.y) << ','
         << LonLatColumns(wgs84, hotspot.crs) << ','
         << Format("%.4f", hotspot.density_per_100m2, 0.0) << ',' << CsvField(hotspot.dominant_class)
-        << ',' << hotspot.items_nearby << '\n';
+        << ',' << hotspot.items_nearby() << '\n';
   }
   output.Commit();
 }

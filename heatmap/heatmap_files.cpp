@@ -59,7 +59,7 @@ HeatmapFilesResult WriteHeatmapFiles(db::SiteDatabase& site, const std::filesyst
 
   std::vector<ClassifiedPoint> points;
   for (const auto& item : map.items) points.push_back({frame.ToCrs(item.site_xy), item.class_name});
-  options.hotspots.min_effort_surveys = HotspotSupport(map.run_ids.size()).min_effort_surveys;
+  options.hotspots.min_effort_surveys = HotspotMinSurveys(map.run_ids.size());
   const auto hotspots =
       FindHotspots(map.density.density, nodata, points, options.hotspots, &map.effort);
   std::vector<db::HotspotRecord> records;

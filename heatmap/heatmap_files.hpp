@@ -22,7 +22,7 @@ namespace littermap::heatmap {
 
 struct HeatmapFilesOptions {
   SiteHeatmapOptions map;
-  HotspotOptions hotspots;    // separation_m: the density's kernel bandwidth
+  HotspotOptions hotspots;    // separation_m, min_effort_surveys: set from the density and runs
   bool force_output = false;  // write into a folder holding other files too
 };
 

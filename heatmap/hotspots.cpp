@@ -84,26 +84,29 @@ std::vector<db::PointXY> Outline(const std::vector<db::PointXY>& peaks, double r
 
 }  // namespace
 
-HotspotOptions HotspotSupport(std::size_t runs) {
-  HotspotOptions options;
-  options.min_items = 3;
-  options.min_effort_surveys = runs >= 2 ? 2.0 : 1.0;
-  return options;
+int Hotspot::items_nearby() const {
+  int items = 0;
+  for (const auto& [name, count] : items_by_class) items += count;
+  return items;
 }
+
+double HotspotMinSurveys(std::size_t runs) { return runs >= 2 ? 2.0 : 1.0; }
 
 std::vector<Hotspot> FindHotspots(const Raster& all_density, float nodata,
                                   std::span<const ClassifiedPoint> items,
                                   const HotspotOptions& options, const Raster* effort) {
   // Ground surveyed too rarely takes no part: at the fringe of the runs' coverage one survey's
   // find is a high density by chance, and the peaks would sit there.
-  Raster density = all_density;
+  Raster well_surveyed;
   if (effort != nullptr) {
-    for (int r = 0; r < density.grid.height; ++r) {
-      for (int c = 0; c < density.grid.width; ++c) {
-        if (effort->at(c, r) < options.min_effort_surveys) density.at(c, r) = nodata;
+    well_surveyed = all_density;
+    for (int r = 0; r < well_surveyed.grid.height; ++r) {
+      for (int c = 0; c < well_surveyed.grid.width; ++c) {
+        if (effort->at(c, r) < options.min_effort_surveys) well_surveyed.at(c, r) = nodata;
       }
     }
   }
+  const Raster& density = effort != nullptr ? well_surveyed : all_density;
   const GridGeometry& grid = density.grid;
   const int radius =
       std::max(1, static_cast<int>(std::ceil(options.separation_m / grid.cell_size_m)));
@@ -142,9 +145,8 @@ std::vector<Hotspot> FindHotspots(const Raster& all_density, float nodata,
       });
       if (!near || !WellSurveyed(item.crs)) continue;
       ++hotspot.items_by_class[item.class_name];
-      ++hotspot.items_nearby;
     }
-    if (hotspot.items_nearby < options.min_items) continue;
+    if (hotspot.items_nearby() < options.min_items) continue;
     int best = 0;
     for (const auto& [name, count] : hotspot.items_by_class) {
       if (count > best) {

@@ -28,10 +28,11 @@ struct Hotspot {
   db::PointXY crs;  // the densest point
   double density_per_100m2 = 0.0;
   std::string dominant_class;
-  int items_nearby = 0;  // distinct items of the area
-  std::map<std::string, int> items_by_class;
-  std::vector<db::PointXY> peaks;    // the merged maxima, densest first
+  std::map<std::string, int> items_by_class;  // distinct items of the area, by class
+  std::vector<db::PointXY> peaks;             // the merged maxima, densest first
   std::vector<db::PointXY> outline;  // convex hull of the peaks' kernels, CRS, counter-clockwise
+
+  int items_nearby() const;  // distinct items of the area
 };
 
 struct ClassifiedPoint {
@@ -39,9 +40,9 @@ struct ClassifiedPoint {
   std::string class_name;
 };
 
-// The support that makes a place a hotspot for a selection of `runs` runs: 3 distinct items, on
-// ground at least two of the runs surveyed (one when there is one run).
-HotspotOptions HotspotSupport(std::size_t runs);
+// The surveys a cell needs for a selection of `runs` runs to take part in its hotspots: two of
+// them (one when there is one run).
+double HotspotMinSurveys(std::size_t runs);
 
 // `effort` (surveys per cell, the density's grid): peaks are sought only where it reaches
 // min_effort_surveys; without it, everywhere.

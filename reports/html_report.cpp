@@ -65,7 +65,6 @@ td.where { min-width: 200px; }
 .spark line.base { stroke: #bbbbbb; stroke-width: 1; }
 .spark text { fill: #555555; }
 ul.warnings { margin: 0; padding-left: 1.1em; color: #8a4b00; }
-.ok { color: var(--accent); }
 .phone-only { display: none; }
 footer { margin-top: 2em; color: var(--muted); font-size: 0.85em; }
 @media screen and (max-width: 760px) {
@@ -185,6 +184,11 @@ std::string Period(const SiteReport& report) {
          FormatUtc(report.runs.back().start_time_s, "%Y-%m-%d") + " · ";
 }
 
+std::string NoHotspotsBecause(const SiteReport& report) {
+  return report.items == 0 ? "the surveys found no litter."
+                           : "no place has enough litter, surveyed often enough, to be one.";
+}
+
 void KeyFigures(const SiteReport& report, std::string& html) {
   const RunFigures* latest = report.runs.empty() ? nullptr : &report.runs.back();
   const auto card = [&](const std::string& value, const std::string& label) {
@@ -206,9 +210,7 @@ void KeyFigures(const SiteReport& report, std::string& html) {
             ": " + Fixed(top.density_per_100m2, 1) + " items per 100 m² each survey, mostly " +
             EscapeHtml(StyleOf(top.dominant_class).many) + ". ";
   } else {
-    html += report.items == 0 ? "No litter hotspot: no litter was found. "
-                              : "No place has enough litter, surveyed often enough, to be a "
-                                "hotspot. ";
+    html += "No hotspots: " + NoHotspotsBecause(report) + " ";
   }
   if (latest) {
     html += "The latest run (" + EscapeHtml(latest->name) + ", " + Date(latest->start_time_s) +
@@ -262,10 +264,7 @@ void MapSection(const SiteReport& report, const SiteMapFigure& figure, std::stri
 void HotspotSection(const SiteReport& report, const SiteMapFigure& figure, std::string& html) {
   html += "<section id=\"hotspots\"><h2>Where to clean first</h2>";
   if (report.hotspots.empty()) {
-    html += std::string("<p>No hotspots: ") +
-            (report.items == 0 ? "the surveys found no litter."
-                               : "no place has enough litter, surveyed often enough, to be one.") +
-            "</p></section>";
+    html += "<p>No hotspots: " + NoHotspotsBecause(report) + "</p></section>";
     return;
   }
   html += "<p class=\"muted\">A hotspot is a place with at least " +
@@ -390,17 +389,11 @@ std::string Routines(const RunQuality& quality) {
 std::string Certainty(const RunFigures& run) {
   const RunQuality& quality = run.quality;
   if (!quality.known || quality.scans == 0) return "not known (no reconstruction record)";
-  const auto odometry = quality.routines.find("odometry-only");
-  const double share = odometry == quality.routines.end()
-                           ? 0.0
-                           : static_cast<double>(odometry->second) / quality.scans;
+  const double share = quality.OdometryOnlyShare();
   std::string text;
-  if (share > 0.2) {
-    text = "<b>unsure</b>: for " + FormatPercent(share) +
-           " of the way only the wheels told where the robot was";
-  } else if (share > 0.05) {
-    text = "<b>fairly sure</b>: for " + FormatPercent(share) +
-           " of the way only the wheels told where the robot was";
+  if (share > 0.05) {
+    text = std::string("<b>") + (share > 0.2 ? "unsure" : "fairly sure") + "</b>: for " +
+           FormatPercent(share) + " of the way only the wheels told where the robot was";
   } else {
     text =
         "<b>sure</b>: the laser or the camera placed " + FormatPercent(1 - share) + " of the way";

@@ -12,6 +12,12 @@
 #include "run/quality_file.hpp"
 
 namespace littermap::reports {
+double RunQuality::OdometryOnlyShare() const {
+  const auto odometry = routines.find("odometry-only");
+  if (!known || scans == 0 || odometry == routines.end()) return 0.0;
+  return static_cast<double>(odometry->second) / scans;
+}
+
 namespace {
 
 std::vector<db::RunRecord> RunsByStartTime(db::SiteDatabase& site) {
@@ -50,16 +56,10 @@ void AddRunWarnings(const SiteReportOptions& options, RunFigures& run) {
     run.warnings.push_back(
         "no reconstruction quality on record (ingested from a truth directory or by an older "
         "littermap)");
-  } else if (run.quality.scans > 0) {
-    const auto odometry = run.quality.routines.find("odometry-only");
-    const double share = odometry == run.quality.routines.end()
-                             ? 0.0
-                             : static_cast<double>(odometry->second) / run.quality.scans;
-    if (share > 0.1) {
-      run.warnings.push_back(FormatPercent(share) +
-                             " of the laser scans were placed by wheel odometry alone: items "
-                             "may sit up to a metre off");
-    }
+  } else if (const double share = run.quality.OdometryOnlyShare(); share > 0.1) {
+    run.warnings.push_back(FormatPercent(share) +
+                           " of the laser scans were placed by wheel odometry alone: items "
+                           "may sit up to a metre off");
   }
   if (run.coverage_fraction < options.low_coverage_fraction) {
     run.warnings.push_back("covered " + FormatPercent(run.coverage_fraction) +
@@ -209,7 +209,8 @@ SiteReport BuildSiteReport(db::SiteDatabase& site, const SiteReportOptions& opti
   for (const db::ItemRecord& item : map.items) {
     points.push_back({report.frame.ToCrs(item.site_xy), item.class_name});
   }
-  heatmap::HotspotOptions hotspot_options = heatmap::HotspotSupport(map.run_ids.size());
+  heatmap::HotspotOptions hotspot_options;
+  hotspot_options.min_effort_surveys = heatmap::HotspotMinSurveys(map.run_ids.size());
   hotspot_options.separation_m = report.bandwidth_m;
   hotspot_options.max_count = options.max_hotspots;
   hotspot_options.min_items = options.hotspot_min_items;

@@ -26,7 +26,7 @@ struct SiteReportOptions {
   std::optional<double> to_time_s;    // runs starting before
   heatmap::SiteHeatmapOptions heatmap;
   int max_hotspots = 10;
-  int hotspot_min_items = heatmap::HotspotSupport(1).min_items;  // distinct items a hotspot needs
+  int hotspot_min_items = heatmap::HotspotOptions{}.min_items;  // distinct items a hotspot needs
   // A run covering less than this share of the ground the site's runs surveyed is flagged.
   double low_coverage_fraction = 0.5;
   double low_registration_quality = 0.6;  // runs matched onto the site map worse are flagged
@@ -42,6 +42,9 @@ struct RunQuality {
   int key_frames = 0;
   int loop_closures_found = 0;
   int loop_closures_accepted = 0;
+
+  // The share of the scans that only wheel odometry placed; 0 when unknown.
+  double OdometryOnlyShare() const;
 };
 
 struct RunFigures {
@@ -91,7 +94,7 @@ struct SiteReport {
   double length_m = 0.0;
   double peak_density_per_100m2 = 0.0;
   double bandwidth_m = 0.0;
-  int hotspot_min_items = 0;  // the support a hotspot needs (heatmap::HotspotSupport)
+  int hotspot_min_items = 0;  // the support a hotspot needs (heatmap/hotspots.hpp)
   double hotspot_min_surveys = 0.0;
   float density_nodata = -9999.0f;  // density raster cells nobody surveyed
   std::vector<HotspotFigures> hotspots;

@@ -32,7 +32,7 @@ struct SurveyOptions {
   run::ReconstructRunOptions reconstruct;
   run::DetectRunOptions detect;  // the model at least
   bool force = false;            // redo every stage, even if up to date
-  int hotspot_min_items = heatmap::HotspotSupport(1).min_items;  // of the heatmap and the report
+  int hotspot_min_items = heatmap::HotspotOptions{}.min_items;  // of the heatmap and the report
 };
 
 // How the survey tells what it does; each may be empty.

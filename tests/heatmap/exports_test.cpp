@@ -59,7 +59,7 @@ TEST(Hotspots, RanksPeaksAndNamesTheirClass) {
   EXPECT_DOUBLE_EQ(hotspots[0].crs.x, 15.5);
   EXPECT_DOUBLE_EQ(hotspots[0].crs.y, 4.5);
   EXPECT_EQ(hotspots[0].dominant_class, "cup");
-  EXPECT_EQ(hotspots[0].items_nearby, 3);
+  EXPECT_EQ(hotspots[0].items_nearby(), 3);
   EXPECT_EQ(hotspots[1].dominant_class, "can");
 }
 
@@ -86,7 +86,7 @@ TEST(Hotspots, OverlappingPeaksAreOneAreaWithSupport) {
   EXPECT_EQ(area.rank, 1);
   EXPECT_DOUBLE_EQ(area.crs.x, 4.5);  // the densest point of the area
   EXPECT_EQ(area.peaks.size(), 2u);
-  EXPECT_EQ(area.items_nearby, 3);
+  EXPECT_EQ(area.items_nearby(), 3);
   EXPECT_EQ(area.items_by_class.at("can"), 2);
   EXPECT_EQ(area.dominant_class, "can");
   double min_x = 1e9, max_x = -1e9;
