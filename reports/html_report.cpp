@@ -200,7 +200,7 @@ void KeyFigures(const SiteReport& report, std::string& html) {
   card(Area(report.surveyed_area_m2), "ground surveyed");
   card(Distance(report.length_m), "driven");
   card(latest ? Count(latest->new_items) : "–", "new in the latest run");
-  card(Count(report.hotspots.size()), "hotspots");
+  card(Count(report.hotspots.size()), report.hotspots.size() == 1 ? "hotspot" : "hotspots");
   html += "</section>";
 
   html += "<p class=\"summary\">";

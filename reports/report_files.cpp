@@ -7,6 +7,7 @@
 #include "core/output_folder.hpp"
 #include "core/time.hpp"
 #include "littermap_version.hpp"
+#include "reports/plain_words.hpp"
 #include "reports/report_json.hpp"
 
 namespace littermap::reports {
@@ -35,10 +36,10 @@ SiteReport WriteReportFiles(const std::filesystem::path& site_file,
 }
 
 std::string ReportSummary(const SiteReport& report, const std::filesystem::path& dir) {
-  const std::size_t runs = report.runs.size();
-  return "Report of " + report.site_name + ": " + std::to_string(runs) +
-         (runs == 1 ? " run, " : " runs, ") + std::to_string(report.items) + " litter items, " +
-         std::to_string(report.hotspots.size()) + " hotspots\n" + (dir / "index.html").string();
+  return "Report of " + report.site_name + ": " + CountOf(report.runs.size(), "run", "runs") +
+         ", " + CountOf(report.items, "litter item", "litter items") + ", " +
+         CountOf(report.hotspots.size(), "hotspot", "hotspots") + "\n" +
+         (dir / "index.html").string();
 }
 
 }  // namespace littermap::reports

@@ -232,7 +232,8 @@ def main():
         if facts["broken"] or facts["images"] < 1 + hotspots:
             failures.append(f"{facts['images']} images ({facts['broken']} not decoded), "
                             f"expected the map and {hotspots} close-ups")
-        for label, key in (("litter items found", "items"), ("hotspots", None)):
+        hotspot_label = "hotspot" if hotspots == 1 else "hotspots"
+        for label, key in (("litter items found", "items"), (hotspot_label, None)):
             shown = facts["cards"].get(label)
             want = hotspots if key is None else expected["totals"][key]
             if shown is None or number(shown) != want:

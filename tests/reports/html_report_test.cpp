@@ -113,6 +113,21 @@ TEST(HtmlReport, HotspotNumbersCoverNoOther) {
   }
 }
 
+TEST(HtmlReport, TheSummaryLineCountsInWords) {
+  SiteReport report;
+  report.site_name = "P";
+  report.runs.resize(1);
+  report.items = 1;
+  report.hotspots.resize(1);
+  EXPECT_EQ(ReportSummary(report, "out"),
+            "Report of P: 1 run, 1 litter item, 1 hotspot\nout/index.html");
+  report.runs.resize(3);
+  report.items = 21;
+  report.hotspots.clear();
+  EXPECT_EQ(ReportSummary(report, "out"),
+            "Report of P: 3 runs, 21 litter items, 0 hotspots\nout/index.html");
+}
+
 TEST(HtmlReport, ReportJsonCarriesTheSameFigures) {
   TempDir dir;
   db::SiteDatabase site = CreateFixtureSite(dir / "park.gpkg", "Park");
