@@ -221,8 +221,10 @@ TEST_P(CaptureCliFullDisk, StopsAndKeepsAVerifiedBag) {
   test::TempDir dir;
   std::vector<std::string> arguments = sensors.Arguments(dir / "run");
   arguments.insert(arguments.end(), {"--storage", GetParam(), "--min-free-disk-mb", "0"});
-  // 512 KiB: a second of the camera into sqlite3, a few seconds into zstd-compressed MCAP.
-  CaptureProcess capture(arguments, dir / "log.txt", 1024);
+  // 2 MiB: a few seconds of the camera into sqlite3, more into zstd-compressed MCAP. With 512 KiB
+  // a loaded machine's first one-second commit could already be larger than the disk, and then
+  // nothing at all is kept (correctly, but it is not the case this test is about).
+  CaptureProcess capture(arguments, dir / "log.txt", 4096);
   ASSERT_TRUE(capture.started());
   const std::optional<int> status = capture.Wait(60s);
   ASSERT_TRUE(status.has_value()) << "still recording after 60 s\n" << capture.Log();
