@@ -30,6 +30,40 @@ struct Frame {
   Eigen::Vector3f t_wc, sun_camera, up_camera;
 };
 
+// Clear plastic (Fresnel with Schlick's approximation, n = 1.5): the share F reflected shows the
+// sky in the mirror direction (the ground below the horizon), the rest passes in, where the
+// share `transmission` lets through what lies behind and the rest is the plastic's own pale
+// scattering. Behind is the ground where the view ray meets it under the object (a few cm past
+// a bottle lying on it; refraction ignored), lit as ground. Mud on the plastic (a lower
+// transmission in the sample than the object's) neither lets through nor mirrors.
+Eigen::Vector3f SeeThrough(const ColourScene& scene, const ObjectSurface& object,
+                           const SurfaceSample& s, const Eigen::Vector3f& own,
+                           const Eigen::Vector3f& p_world, const Eigen::Vector3f& view_world,
+                           const Eigen::Vector3f& n_world, float footprint) {
+  const Eigen::Vector3f ray = -view_world;
+  const float drop = p_world.z() - object.ground_z_m;
+  const float t = ray.z() < -0.05f ? std::clamp(drop / -ray.z(), 0.0f, 0.5f) : 0.0f;
+  const Eigen::Vector3f q = p_world + t * ray;
+  const float cos_view = std::clamp(n_world.dot(view_world), 0.0f, 1.0f);
+  // The ground is seen more obliquely than the plastic: a larger footprint on it.
+  const float ground_footprint =
+      std::min(1.0f, footprint * std::max(0.1f, cos_view) / std::max(0.1f, -ray.z()));
+  const Eigen::Vector3f albedo =
+      GroundAlbedo(scene.ground.TypeAt(q.x(), q.y()), q.x(), q.y(), ground_footprint);
+  const Lighting& l = scene.lighting;
+  const float sun_up = std::max(0.0f, float(l.sun_direction_world.normalized().z()));
+  const Eigen::Vector3f behind =
+      albedo *
+      (l.sky_irradiance + l.sun_irradiance * scene.ground.SunlightAt(q.x(), q.y()) * sun_up);
+  const Eigen::Vector3f mirror = 2 * n_world.dot(view_world) * n_world - view_world;
+  const Eigen::Vector3f reflected = mirror.z() > 0 ? SkyColour(mirror.normalized()) : behind;
+  const float m = 1 - cos_view;
+  const float clean = s.transmission / object.transmission;
+  const float fresnel = (0.04f + 0.96f * m * m * m * m * m) * clean;
+  const Eigen::Vector3f entering = own + (behind - own) * s.transmission;
+  return entering + (reflected - entering) * fresnel;
+}
+
 Eigen::Vector3f ShadeSurface(const ZBuffer& zb, const PinholeCamera& camera, const Frame& f,
                              const ColourScene& scene, std::size_t i, const Eigen::Vector3f& ray) {
   const float z = zb.depth_m()[i];
@@ -62,6 +96,10 @@ Eigen::Vector3f ShadeSurface(const ZBuffer& zb, const PinholeCamera& camera, con
   const float lambert = std::max(0.0f, n.dot(f.sun_camera));
   const float sky = l.sky_irradiance * (0.7f + 0.3f * n.dot(f.up_camera));
   Eigen::Vector3f c = s.albedo * (sky + sun * lambert);
+  if (s.transmission > 0) {
+    const ObjectSurface& object = scene.surfaces[std::size_t(id - 1)];
+    c = SeeThrough(scene, object, s, c, p_world, f.R_wc * view, f.R_wc * n, footprint);
+  }
   if (s.specular > 0 && lambert > 0) {
     const float nh = std::max(0.0f, n.dot((f.sun_camera + view).normalized()));
     c += Eigen::Vector3f::Constant(s.specular * sun * std::pow(nh, s.shininess));

@@ -38,18 +38,24 @@ json Vec(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); 
 json Vec(const Eigen::Vector2d& v) { return json::array({v.x(), v.y()}); }
 
 json ObjectJson(const WorldObject& o) {
-  return {{"id", o.id},
-          {"group", o.group},
-          {"kind", ObjectKindName(o.kind)},
-          {"class", o.label},
-          {"shape", ShapeName(o.shape)},
-          {"center_m", Vec(o.center_m)},
-          {"rpy_rad",
-           json::array({o.orientation.roll_rad, o.orientation.pitch_rad, o.orientation.yaw_rad})},
-          {"size_m", Vec(o.size_m)},
-          {"colour_rgb", Vec(o.colour_rgb)},
-          {"texture", o.texture},
-          {"hidden_fraction", o.hidden_fraction}};
+  json object = {{"id", o.id},
+                 {"group", o.group},
+                 {"kind", ObjectKindName(o.kind)},
+                 {"class", o.label},
+                 {"shape", ShapeName(o.shape)},
+                 {"center_m", Vec(o.center_m)},
+                 {"rpy_rad", json::array({o.orientation.roll_rad, o.orientation.pitch_rad,
+                                          o.orientation.yaw_rad})},
+                 {"size_m", Vec(o.size_m)},
+                 {"colour_rgb", Vec(o.colour_rgb)},
+                 {"texture", o.texture},
+                 {"hidden_fraction", o.hidden_fraction}};
+  // Wear of hard-to-see litter, only where there is some: worlds without it write what they
+  // always wrote.
+  if (o.dirt > 0) object["dirt"] = o.dirt;
+  if (o.transmission > 0) object["transmission"] = o.transmission;
+  if (o.crushed) object["crushed"] = true;
+  return object;
 }
 
 json TerrainJson(const Terrain& terrain) {

@@ -7,9 +7,11 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "sim/litter_wear.hpp"
 #include "sim/random.hpp"
 #include "sim/world.hpp"
 
@@ -131,10 +133,20 @@ bool InPark(const World& world, const Eigen::Vector2d& p) {
          p.y() < world.spec.size_y_m - 0.2;
 }
 
-// Places one small object of `label` near what `draw` proposes.
+// How items on grass sink into it: with `probability`, by a share of their height drawn from
+// [depth_min, depth_max].
+struct Sinking {
+  double probability = 0.3;
+  double depth_min = 0.3, depth_max = 0.6;
+};
+
+// Places one small object of `label` near what `draw` proposes, worn as `wear` says (none for
+// natural objects). A `spot` moves it there, unsunk, once every draw of `rng` is taken as
+// without it, so that moving some items leaves the others where they were.
 template <typename Draw>
 void PlaceSmall(World& world, Rng& rng, ObjectKind kind, const std::string& label,
-                double hidden_probability, Draw draw) {
+                const Sinking& sinking, const LitterWear* wear,
+                const std::optional<Eigen::Vector2d>& spot, Draw draw) {
   const Kind& k = Catalog().at(label);
   Eigen::Vector2d p = draw();
   for (int i = 0; i < 100 && (!InPark(world, p) || InsideStructure(world, p)); ++i) p = draw();
@@ -150,9 +162,14 @@ void PlaceSmall(World& world, Rng& rng, ObjectKind kind, const std::string& labe
   o.orientation.yaw_rad = rng.Uniform(-kPi, kPi);
   const bool lying = rng.Bernoulli(k.lying_probability);
   if (lying) o.orientation.pitch_rad = kPi / 2;  // the local z axis lies flat
+  if (wear != nullptr) ApplyLitterWear(*wear, o);
   const double height = lying ? o.size_m.x() : o.size_m.z();
-  if (world.terrain.GroundAt(p) == GroundType::kGrass && rng.Bernoulli(hidden_probability)) {
-    o.hidden_fraction = rng.Uniform(0.3, 0.6);
+  if (world.terrain.GroundAt(p) == GroundType::kGrass && rng.Bernoulli(sinking.probability)) {
+    o.hidden_fraction = rng.Uniform(sinking.depth_min, sinking.depth_max);
+  }
+  if (spot) {
+    p = *spot;
+    o.hidden_fraction = 0;
   }
   o.center_m = {p.x(), p.y(),
                 world.terrain.HeightAt(p) + k.raised_m + height * (0.5 - o.hidden_fraction)};
@@ -175,11 +192,40 @@ std::vector<Eigen::Vector2d> PathEdgePoints(const Terrain& terrain) {
   return points;
 }
 
+// A point well inside a random gravel patch (on gravel, not on a path crossing it, clear of
+// structure), or none when the park has no gravel.
+std::optional<Eigen::Vector2d> OnGravel(const World& world, Rng& rng) {
+  const Terrain& terrain = world.terrain;
+  std::vector<const GroundPatch*> gravel;
+  for (const GroundPatch& patch : terrain.patches()) {
+    if (patch.type == GroundType::kGravel) gravel.push_back(&patch);
+  }
+  if (gravel.empty()) return std::nullopt;
+  Eigen::Vector2d p = gravel.front()->center_m;
+  for (int i = 0; i < 100; ++i) {
+    const GroundPatch& patch = *gravel[static_cast<std::size_t>(rng.Index(int(gravel.size())))];
+    // Inside 0.6 of the radius: the rim wobbles by 20 % and ragged borders by ~15 cm.
+    const double r = 0.6 * patch.radius_m * std::sqrt(rng.Uniform01());
+    const double a = rng.Uniform(-kPi, kPi);
+    p = patch.center_m + r * Eigen::Vector2d(std::cos(a), std::sin(a));
+    if (terrain.GroundAt(p) == GroundType::kGravel && InPark(world, p) &&
+        !InsideStructure(world, p)) {
+      break;
+    }
+  }
+  return p;
+}
+
 }  // namespace
 
 void PlaceLitter(World& world) {
   const LitterSpec& spec = world.spec.litter;
   Rng rng(world.spec.seed, 301);
+  // The wear of every item and where items dropped on gravel fall come from streams of their
+  // own: a world with none of it draws exactly what it drew before wear existed.
+  Rng wear_rng(world.spec.seed, 302), gravel_rng(world.spec.seed, 303);
+  const Sinking sinking{spec.half_hidden_fraction, spec.half_hidden_depth_min,
+                        spec.half_hidden_depth_max};
   std::vector<Eigen::Vector2d> hotspots = world.hotspots_m;
   std::vector<double> weights(hotspots.size(), 3.0);
   for (const Eigen::Vector2d& p : PathEdgePoints(world.terrain)) {
@@ -196,9 +242,12 @@ void PlaceLitter(World& world) {
     return hotspots.back();
   };
   const auto drop = [&](Rng& draw_rng, const std::string& label) {
+    const LitterWear wear = DrawLitterWear(spec, label, wear_rng);
+    const std::optional<Eigen::Vector2d> spot =
+        wear.on_gravel ? OnGravel(world, gravel_rng) : std::nullopt;
     const bool clustered = !hotspots.empty() && draw_rng.Bernoulli(spec.hotspot_fraction);
     const Eigen::Vector2d center = clustered ? pick_hotspot(draw_rng) : Eigen::Vector2d::Zero();
-    PlaceSmall(world, draw_rng, ObjectKind::kLitter, label, spec.half_hidden_fraction, [&] {
+    PlaceSmall(world, draw_rng, ObjectKind::kLitter, label, sinking, &wear, spot, [&] {
       if (clustered) {
         return Eigen::Vector2d(center.x() + draw_rng.Normal(0, spec.hotspot_sigma_m),
                                center.y() + draw_rng.Normal(0, spec.hotspot_sigma_m));
@@ -241,7 +290,7 @@ void PlaceNaturalObjects(World& world) {
                      : Eigen::Vector2d(rng.Uniform(0, world.spec.size_x_m),
                                        rng.Uniform(0, world.spec.size_y_m));
     const double sigma = flower ? 1.5 : under_tree ? 2.0 : 0.0;
-    PlaceSmall(world, rng, ObjectKind::kNatural, label, 0.3, [&] {
+    PlaceSmall(world, rng, ObjectKind::kNatural, label, Sinking{}, nullptr, std::nullopt, [&] {
       if (sigma == 0) {
         return Eigen::Vector2d(rng.Uniform(0, world.spec.size_x_m),
                                rng.Uniform(0, world.spec.size_y_m));

@@ -84,9 +84,10 @@ SurfaceSample SmallObjectSample(const ObjectSurface& o, const Eigen::Vector3f& q
       const bool rim = std::abs(q.z()) > 0.8f * half_z;
       return {rim ? Colour(0.7f, 0.7f, 0.72f) : base, 0.7f, 40};
     }
-    case SurfaceTexture::kPlastic: {  // bottle with a cap
-      const bool cap = q.z() > 0.85f * half_z;
-      return {cap ? Colour(0.8f, 0.8f, 0.8f) : base, 0.6f, 60};
+    case SurfaceTexture::kPlastic: {  // bottle with a cap; a clear bottle's is small and opaque
+      const bool cap = q.z() > 0.85f * half_z &&
+                       (o.transmission == 0 || q.head<2>().norm() < 0.2f * o.size_m.x());
+      return {cap ? Colour(0.8f, 0.8f, 0.8f) : base, 0.6f, 60, cap ? 0.0f : o.transmission};
     }
     case SurfaceTexture::kPaper:
       return {base * Grain(q.x(), q.y() + q.z(), 150, 0.05f, fp, 78)};
@@ -120,6 +121,23 @@ SurfaceSample SmallObjectSample(const ObjectSurface& o, const Eigen::Vector3f& q
       break;
   }
   return {base * Grain(q.x() + q.z(), q.y(), 10, 0.1f, fp, 83)};
+}
+
+// Wet soil on an item (dirt 0..1): wet surfaces darken (water fills the pores), a film of mud
+// greys the print, and smears of mud cover about half of it in blotches of a few cm, browner
+// the dirtier it is; mud is matt.
+void Soil(const ObjectSurface& o, const Eigen::Vector3f& q, float fp, SurfaceSample& s) {
+  const Colour mud(0.12f, 0.085f, 0.05f);  // wet soil: half as bright as dry (0.2-0.3)
+  const float grey = s.albedo.dot(Colour(0.2126f, 0.7152f, 0.0722f));
+  Colour c = s.albedo + (Colour::Constant(grey) - s.albedo) * (0.5f * o.dirt);
+  c *= 1 - 0.5f * o.dirt;
+  const float shift = float(o.salt % 1024u);  // each item its own blotches
+  const float blotch = Fbm(q.x() + 0.4f * q.z() + shift, q.y() - 0.4f * q.z(), 18, 2, fp, 84);
+  const float t = std::clamp((blotch - 0.35f) / 0.3f, 0.0f, 1.0f);
+  const float cover = o.dirt * t * t * (3 - 2 * t);
+  s.albedo = c + (mud - c) * cover;
+  s.specular *= 1 - 0.7f * o.dirt;
+  s.transmission *= 1 - cover;  // mud on clear plastic is opaque
 }
 
 }  // namespace
@@ -160,6 +178,8 @@ std::vector<ObjectSurface> MakeObjectSurfaces(const World& world) {
     s.colour_rgb = object.colour_rgb.cast<float>();
     s.ground_z_m = static_cast<float>(world.terrain.HeightAt(object.center_m.head<2>()));
     s.salt = static_cast<std::uint32_t>(HashMix(static_cast<std::uint64_t>(object.id) + 17));
+    s.dirt = static_cast<float>(object.dirt);
+    s.transmission = static_cast<float>(object.transmission);
     surfaces.push_back(s);
   }
   return surfaces;
@@ -171,6 +191,7 @@ SurfaceSample ShadeObject(const ObjectSurface& object, const Eigen::Vector3f& p_
   SurfaceSample s = object.texture >= SurfaceTexture::kAluminium
                         ? SmallObjectSample(object, q, footprint_m)
                         : StructureSample(object, q, footprint_m);
+  if (object.dirt > 0) Soil(object, q, footprint_m, s);
   s.albedo = s.albedo.cwiseMax(0.0f).cwiseMin(1.0f);
   return s;
 }

@@ -44,6 +44,8 @@ struct ObjectSurface {
   Eigen::Vector3f colour_rgb = Eigen::Vector3f::Constant(0.5f);
   float ground_z_m = 0;    // terrain height under the centre
   std::uint32_t salt = 0;  // per-object pattern variation (print layout, spots)
+  float dirt = 0;          // WorldObject::dirt
+  float transmission = 0;  // WorldObject::transmission
 };
 std::vector<ObjectSurface> MakeObjectSurfaces(const World& world);
 
@@ -51,6 +53,9 @@ struct SurfaceSample {
   Eigen::Vector3f albedo = Eigen::Vector3f::Constant(0.5f);
   float specular = 0;   // strength of a white highlight ...
   float shininess = 1;  // ... with this Blinn–Phong exponent
+  // Clear material: share of the light from behind the surface that passes through it (at
+  // normal incidence); the renderer blends in what lies behind (sim/colour_image.cpp).
+  float transmission = 0;
 };
 
 // Ground albedo of `type` at world (x, y).

@@ -35,6 +35,10 @@ struct WorldObject {
   Eigen::Vector3d colour_rgb = Eigen::Vector3d::Constant(0.5);  // linear 0..1
   std::string texture;         // "bark", "leaves", "stone", "wood", "metal", "plastic", ...
   double hidden_fraction = 0;  // share hidden in grass (litter and natural objects)
+  // Wear that makes litter hard to see (sim/litter_wear.hpp); all 0 / false: as made.
+  double dirt = 0;          // wet soil on it: 0 clean .. 1 caked (darker, greyer, browner)
+  double transmission = 0;  // clear plastic: share of the light from behind passing through
+  bool crushed = false;     // a can flattened (its size_m is the crushed size)
   double size() const { return size_m.maxCoeff(); }  // largest extent
 };
 

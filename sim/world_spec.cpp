@@ -55,19 +55,34 @@ void ReadStructure(YamlFields fields, StructureSpec& s) {
   fields.Finish();
 }
 
+// A share: a number in [0, 1] (finiteness is checked by YamlFields::Read).
+void ReadShare(YamlFields& fields, const char* key, double& value) {
+  fields.Read(key, value);
+  Check(fields, key, value >= 0 && value <= 1, "must be in [0, 1]");
+}
+
 void ReadLitter(YamlFields fields, LitterSpec& litter) {
   ReadCount(fields, "count", litter.count, kMaxItems);
-  fields.Read("hotspot_fraction", litter.hotspot_fraction);
+  ReadShare(fields, "hotspot_fraction", litter.hotspot_fraction);
   fields.Read("hotspot_sigma_m", litter.hotspot_sigma_m);
-  fields.Read("half_hidden_fraction", litter.half_hidden_fraction);
-  fields.Read("daily_pickup_fraction", litter.daily_pickup_fraction);
+  ReadShare(fields, "half_hidden_fraction", litter.half_hidden_fraction);
+  // An item sunk 90 % or more would be gone: nothing left to detect or to score.
+  fields.Read("half_hidden_depth_min", litter.half_hidden_depth_min);
+  fields.Read("half_hidden_depth_max", litter.half_hidden_depth_max);
+  Check(fields, "half_hidden_depth_min",
+        litter.half_hidden_depth_min >= 0 && litter.half_hidden_depth_min <= 0.9,
+        "must be in [0, 0.9]");
+  Check(fields, "half_hidden_depth_max",
+        litter.half_hidden_depth_max >= litter.half_hidden_depth_min &&
+            litter.half_hidden_depth_max <= 0.9,
+        "must be in [half_hidden_depth_min, 0.9]");
+  ReadShare(fields, "dirty_fraction", litter.dirty_fraction);
+  ReadShare(fields, "crushed_fraction", litter.crushed_fraction);
+  ReadShare(fields, "clear_bottle_fraction", litter.clear_bottle_fraction);
+  ReadShare(fields, "on_gravel_fraction", litter.on_gravel_fraction);
+  ReadShare(fields, "daily_pickup_fraction", litter.daily_pickup_fraction);
   ReadCount(fields, "daily_new", litter.daily_new, kMaxItems);
   fields.Read("class_weights", litter.class_weights, kLitterClasses);
-  Check(fields, "hotspot_fraction", litter.hotspot_fraction >= 0 && litter.hotspot_fraction <= 1,
-        "must be in [0, 1]");
-  Check(fields, "daily_pickup_fraction",
-        litter.daily_pickup_fraction >= 0 && litter.daily_pickup_fraction <= 1,
-        "must be in [0, 1]");
   fields.Finish();
 }
 

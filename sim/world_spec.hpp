@@ -60,7 +60,17 @@ struct LitterSpec {
   int count = 60;
   double hotspot_fraction = 0.75;  // share placed around benches, bins and path edges
   double hotspot_sigma_m = 1.2;    // spread around a hotspot
+  // Share of the items falling on grass that sink into it (long grass hides their lower part),
+  // each by a share of its height drawn uniformly from [half_hidden_depth_min, _max].
   double half_hidden_fraction = 0.2;
+  double half_hidden_depth_min = 0.3;
+  double half_hidden_depth_max = 0.6;
+  // Hard-to-see litter (sim/litter_wear.hpp), each share drawn per item from its own random
+  // stream, so 0 (the default) leaves a world exactly as without these keys.
+  double dirty_fraction = 0;         // items wet and soiled: darker, greyer, browner
+  double crushed_fraction = 0;       // cans flattened to 20-40 % of their height
+  double clear_bottle_fraction = 0;  // bottles of clear plastic: the ground shows through
+  double on_gravel_fraction = 0;     // items dropped on a gravel patch (when there is one)
   // How the litter changes from day to day (WorldSpec::litter_day): each day park staff pick up
   // this share of it and visitors drop daily_new items more, in the same hotspot pattern.
   double daily_pickup_fraction = 0.3;

@@ -44,6 +44,58 @@ TEST(WorldSpec, SamplesLoad) {
   EXPECT_TRUE(large.route.come_home);
   for (const auto& [name, route] : large.routes) EXPECT_TRUE(route.come_home) << name;
   EXPECT_TRUE(LoadWorldSpec(SampleWorld("park_tilts.yaml")).route.come_home);
+  const WorldSpec hard = LoadWorldSpec(SampleWorld("park_hard.yaml"));
+  EXPECT_EQ(hard.name, "park_hard");
+  EXPECT_TRUE(hard.route.come_home);
+  EXPECT_DOUBLE_EQ(hard.litter.dirty_fraction, 0.4);
+  EXPECT_DOUBLE_EQ(hard.litter.crushed_fraction, 0.5);
+  EXPECT_DOUBLE_EQ(hard.litter.clear_bottle_fraction, 0.6);
+}
+
+TEST(WorldSpec, HardLitterKeys) {
+  // Absent, they keep every world as it was: no wear, sunk by 30-60 % as before the keys.
+  const LitterSpec defaults = ParseWorldSpec(kRoute).litter;
+  EXPECT_EQ(defaults.dirty_fraction, 0);
+  EXPECT_EQ(defaults.crushed_fraction, 0);
+  EXPECT_EQ(defaults.clear_bottle_fraction, 0);
+  EXPECT_EQ(defaults.on_gravel_fraction, 0);
+  EXPECT_EQ(defaults.half_hidden_depth_min, 0.3);
+  EXPECT_EQ(defaults.half_hidden_depth_max, 0.6);
+  const LitterSpec litter =
+      ParseWorldSpec(std::string(kRoute) +
+                     "litter: {dirty_fraction: 0.4, crushed_fraction: 0.5, clear_bottle_fraction: "
+                     "0.6, on_gravel_fraction: 0.25, half_hidden_depth_min: 0.4, "
+                     "half_hidden_depth_max: 0.7}\n")
+          .litter;
+  EXPECT_DOUBLE_EQ(litter.dirty_fraction, 0.4);
+  EXPECT_DOUBLE_EQ(litter.crushed_fraction, 0.5);
+  EXPECT_DOUBLE_EQ(litter.clear_bottle_fraction, 0.6);
+  EXPECT_DOUBLE_EQ(litter.on_gravel_fraction, 0.25);
+  EXPECT_DOUBLE_EQ(litter.half_hidden_depth_min, 0.4);
+  EXPECT_DOUBLE_EQ(litter.half_hidden_depth_max, 0.7);
+  const auto litter_error = [](const std::string& keys) {
+    return ErrorOf(std::string(kRoute) + "litter: {" + keys + "}\n");
+  };
+  EXPECT_EQ(litter_error("dirty_fraction: 1.5"),
+            "w.yaml: litter.dirty_fraction: must be in [0, 1]");
+  EXPECT_EQ(litter_error("crushed_fraction: -0.1"),
+            "w.yaml: litter.crushed_fraction: must be in [0, 1]");
+  EXPECT_EQ(litter_error("clear_bottle_fraction: .nan"),
+            "w.yaml: litter.clear_bottle_fraction: must be finite");
+  EXPECT_EQ(litter_error("on_gravel_fraction: many"),
+            "w.yaml: litter.on_gravel_fraction: expected a number");
+  EXPECT_EQ(litter_error("on_gravel_fraction: 2"),
+            "w.yaml: litter.on_gravel_fraction: must be in [0, 1]");
+  EXPECT_EQ(litter_error("half_hidden_fraction: 1.2"),
+            "w.yaml: litter.half_hidden_fraction: must be in [0, 1]");
+  EXPECT_EQ(litter_error("half_hidden_depth_min: 0.95"),
+            "w.yaml: litter.half_hidden_depth_min: must be in [0, 0.9]");
+  EXPECT_EQ(litter_error("half_hidden_depth_max: 0.2"),  // below the default min 0.3
+            "w.yaml: litter.half_hidden_depth_max: must be in [half_hidden_depth_min, 0.9]");
+  EXPECT_EQ(litter_error("half_hidden_depth_max: .inf"),
+            "w.yaml: litter.half_hidden_depth_max: must be finite");
+  EXPECT_EQ(litter_error("dirt_fraction: 0.4"), "w.yaml: litter.dirt_fraction: unknown key");
+  EXPECT_EQ(litter_error("half_hidden_depth_min: 0, half_hidden_depth_max: 0.9"), "no error");
 }
 
 TEST(WorldSpec, CameraAndTruthSections) {
