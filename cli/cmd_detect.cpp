@@ -9,6 +9,7 @@
 #include "cli/option_checks.hpp"
 #include "cli/sensor_arguments.hpp"
 #include "detect/debug_frames.hpp"
+#include "detect/options_file.hpp"
 #include "run/detect_run.hpp"
 
 namespace littermap::cli {
@@ -31,6 +32,7 @@ void RegisterDetectCommand(CLI::App& app, CliContext& context) {
     std::string bag;
     std::string run_dir;
     std::string debug_frames;
+    std::string options_file;
     SensorArguments sensors;
     run::DetectRunOptions options;
   };
@@ -71,10 +73,26 @@ void RegisterDetectCommand(CLI::App& app, CliContext& context) {
                    "Sightings this close (m) are one item")
       ->capture_default_str()
       ->check(FiniteRange(0.01, 10));
+  command
+      ->add_option("--options", arguments->options_file,
+                   "YAML file of tuning options (unknown keys are errors; the flags above "
+                   "override it)")
+      ->check(ExistingInput(InputKind::kFile));
   command->add_option("--debug-frames", arguments->debug_frames,
                       "Write a segmentation picture of every processed frame here");
   AddSensorOptions(command, arguments->sensors);
-  command->callback([arguments, &context] {
+  command->callback([arguments, command, &context] {
+    if (!arguments->options_file.empty()) {
+      // The file sets the tuning; a flag given on the command line overrides it.
+      const run::DetectRunOptions flags = arguments->options;
+      run::DetectRunOptions& options = arguments->options;
+      detect::ApplyOptionsFile(arguments->options_file, &options.objects, &options.fusion);
+      if (command->count("--every") > 0) options.objects.every = flags.objects.every;
+      if (command->count("--min-views") > 0) options.fusion.min_views = flags.fusion.min_views;
+      if (command->count("--association-radius") > 0) {
+        options.fusion.association_radius_m = flags.fusion.association_radius_m;
+      }
+    }
     context.run = [arguments, &context] {
       arguments->options.topic_roles = arguments->sensors.Roles();
       arguments->options.objects.frames.stamps = arguments->sensors.Stamps();

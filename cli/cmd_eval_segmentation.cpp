@@ -6,6 +6,7 @@
 
 #include "cli/cli_context.hpp"
 #include "cli/option_checks.hpp"
+#include "detect/options_file.hpp"
 #include "detect/segmentation_evaluation.hpp"
 
 namespace littermap::cli {
@@ -15,6 +16,7 @@ struct SegmentationArguments {
   std::string bag;
   std::string truth_dir;
   bool json = false;
+  std::string options_file;
   detect::SegmentationEvaluationOptions options;
 };
 
@@ -46,9 +48,19 @@ void RegisterEvalSegmentationCommand(CLI::App& app, CliContext& context) {
                    "Score objects showing at least this many pixels with depth")
       ->capture_default_str()
       ->check(WholeNumber(0, 100000000));
+  command
+      ->add_option("--options", arguments->options_file,
+                   "YAML file of detection tuning options, as for `detect --options`")
+      ->check(ExistingInput(InputKind::kFile));
   command->add_flag("--json", arguments->json,
                     "JSON: {CLASS: {objects, mean_iou, found_share}}, CLASS 'all' too");
   command->callback([arguments, &context] {
+    if (!arguments->options_file.empty()) {
+      detect::RunObjectsOptions objects;
+      detect::FusionOptions fusion;
+      detect::ApplyOptionsFile(arguments->options_file, &objects, &fusion);
+      arguments->options.segmentation = objects.segmentation;
+    }
     context.run = [arguments, &context] { RunEvalSegmentation(*arguments, context); };
   });
 }

@@ -46,3 +46,12 @@ class EnvironmentError : public Error {
 };
 
 }  // namespace littermap
+
+namespace littermap {
+
+// Throws UsageError "`stage`: `key` must be `rule`" unless ok: one line per option in Validate().
+inline void RequireOption(bool ok, const char* stage, const char* key, const char* rule) {
+  if (!ok) throw UsageError(std::string(stage) + ": " + key + " must be " + rule);
+}
+
+}  // namespace littermap

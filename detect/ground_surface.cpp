@@ -76,11 +76,16 @@ std::vector<Eigen::Vector3f> Sample(const OrganizedCloud& cloud,
 }  // namespace
 
 void GroundOptions::Validate() const {
-  if (!(max_tilt_deg > 0 && max_tilt_deg < 90) || !(max_level_offset_m > 0) ||
-      min_component_points < 10 || min_joined_points < 10 || !(max_join_residual_m > 0) ||
-      max_fit_points < 10 || !(inlier_band_m > 0) || !(depth_noise_per_m2 >= 0)) {
-    throw UsageError("segmentation: ground options out of range");
-  }
+  constexpr const char* kStage = "segmentation";
+  RequireOption(max_tilt_deg > 0 && max_tilt_deg < 90, kStage, "ground_max_tilt_deg",
+                "between 0 and 90");
+  RequireOption(max_level_offset_m > 0, kStage, "ground_max_level_offset_m", "> 0");
+  RequireOption(min_component_points >= 10, kStage, "ground_min_component_points", ">= 10");
+  RequireOption(min_joined_points >= 10, kStage, "ground_min_joined_points", ">= 10");
+  RequireOption(max_join_residual_m > 0, kStage, "ground_max_join_residual_m", "> 0");
+  RequireOption(max_fit_points >= 10, kStage, "ground max_fit_points", ">= 10");
+  RequireOption(inlier_band_m > 0, kStage, "ground_inlier_band_m", "> 0");
+  RequireOption(depth_noise_per_m2 >= 0, kStage, "depth_noise_per_m2", ">= 0");
 }
 
 GroundResult FindGround(const OrganizedCloud& cloud, const Components& components,

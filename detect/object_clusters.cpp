@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Eigenvalues>
 #include <opencv2/imgproc.hpp>
@@ -20,32 +21,65 @@ cv::Rect Grown(const cv::Rect& box, const ObjectClusterOptions& options, const c
          cv::Rect(cv::Point(0, 0), image);
 }
 
+// The highest point of the mask (roi-sized) above the ground surface; -inf without points.
+float HighestPoint(const OrganizedCloud& cloud, const GroundSurface& surface, const cv::Mat& mask,
+                   const cv::Rect& roi) {
+  float top = -std::numeric_limits<float>::infinity();
+  for (int v = 0; v < roi.height; ++v) {
+    const auto* row = mask.ptr<std::uint8_t>(v);
+    for (int u = 0; u < roi.width; ++u) {
+      const int i = cloud.Index(u + roi.x, v + roi.y);
+      if (!row[u] || !cloud.HasPoint(i)) continue;
+      top = std::max(top, static_cast<float>(
+                              surface.HeightAbove(cloud.points_m[static_cast<std::size_t>(i)])));
+    }
+  }
+  return top;
+}
+
 // GrabCut in the grown box; returns the refined object mask of `roi` size.
-// blob and others: roi-sized masks of this blob and of every other non-ground pixel.
-cv::Mat RefineWithGrabCut(const cv::Mat& colour_bgr, const cv::Mat& blob, const cv::Mat& others,
-                          const cv::Mat& labels, const cv::Rect& roi) {
+// blob, core and others: roi-sized masks of this blob, of its core (GrabCut keeps it) and of
+// every other non-ground pixel.
+cv::Mat RefineWithGrabCut(const cv::Mat& colour_bgr, const cv::Mat& blob, const cv::Mat& core,
+                          const cv::Mat& others, const cv::Mat& labels, const cv::Rect& roi,
+                          int max_pixels, int fringe_px) {
   cv::Mat mask(roi.size(), CV_8U, cv::Scalar(cv::GC_PR_BGD));
-  cv::Mat core;
-  cv::erode(blob, core, cv::Mat());
+  cv::Mat fringe;
+  if (fringe_px > 0) {
+    cv::dilate(blob, fringe, cv::getStructuringElement(cv::MORPH_RECT, {3, 3}), {-1, -1},
+               fringe_px);
+  }
   for (int v = 0; v < roi.height; ++v) {
     for (int u = 0; u < roi.width; ++u) {
       const std::uint8_t label = labels.at<std::uint8_t>(v + roi.y, u + roi.x);
       auto& m = mask.at<std::uint8_t>(v, u);
       if (blob.at<std::uint8_t>(v, u)) {
         m = core.at<std::uint8_t>(v, u) ? cv::GC_FGD : cv::GC_PR_FGD;
-      } else if (label == kGround || others.at<std::uint8_t>(v, u)) {
-        m = cv::GC_BGD;  // certain ground, or another object's pixel
+      } else if (others.at<std::uint8_t>(v, u) ||
+                 (label == kGround && (fringe.empty() || !fringe.at<std::uint8_t>(v, u)))) {
+        m = cv::GC_BGD;  // another object's pixel, or ground beyond the blob's fringe
       }
     }
   }
+  const double scale = std::min(1.0, std::sqrt(double(max_pixels) / double(roi.area())));
+  cv::Mat small_colour = colour_bgr(roi), small_mask = mask;
+  if (scale < 1) {
+    cv::resize(colour_bgr(roi), small_colour, cv::Size(), scale, scale, cv::INTER_AREA);
+    cv::resize(mask, small_mask, small_colour.size(), 0, 0, cv::INTER_NEAREST);
+  }
   cv::Mat background_model, foreground_model;
   try {
-    cv::grabCut(colour_bgr(roi), mask, cv::Rect(), background_model, foreground_model, 1,
+    cv::grabCut(small_colour, small_mask, cv::Rect(), background_model, foreground_model, 1,
                 cv::GC_INIT_WITH_MASK);
   } catch (const cv::Exception&) {
     return blob.clone();  // too few samples of one side for its GMM: keep the blob
   }
-  cv::Mat refined = (mask == cv::GC_FGD) | (mask == cv::GC_PR_FGD);
+  cv::Mat refined = (small_mask == cv::GC_FGD) | (small_mask == cv::GC_PR_FGD);
+  if (scale < 1) {
+    cv::resize(refined, refined, roi.size(), 0, 0, cv::INTER_NEAREST);
+    refined.setTo(0, mask == cv::GC_BGD);
+    refined.setTo(255, mask == cv::GC_FGD);
+  }
   // Keep what is connected to the blob: GrabCut may switch on look-alike pixels elsewhere.
   cv::Mat components;
   cv::connectedComponents(refined, components, 8, CV_32S);
@@ -116,10 +150,17 @@ bool Measure(const OrganizedCloud& cloud, const GroundSurface& surface, const cv
 }  // namespace
 
 void ObjectClusterOptions::Validate() const {
-  if (min_pixels < 1 || min_depth_points < 3 || !(min_size_m >= 0) || !(max_size_m > min_size_m) ||
-      !(max_height_m > 0) || !(box_margin >= 0) || min_box_margin_px < 1) {
-    throw UsageError("segmentation: object cluster options out of range");
-  }
+  constexpr const char* kStage = "segmentation";
+  RequireOption(min_pixels >= 1, kStage, "min_pixels", ">= 1");
+  RequireOption(min_depth_points >= 3, kStage, "min_depth_points", ">= 3");
+  RequireOption(min_size_m >= 0, kStage, "min_size_m", ">= 0");
+  RequireOption(max_size_m > min_size_m, kStage, "max_size_m", "> min_size_m");
+  RequireOption(max_height_m > 0, kStage, "max_height_m", "> 0");
+  RequireOption(box_margin >= 0, kStage, "box_margin", ">= 0");
+  RequireOption(min_box_margin_px >= 1, kStage, "min_box_margin_px", ">= 1");
+  RequireOption(max_refine_pixels >= 100, kStage, "max_refine_pixels", ">= 100");
+  RequireOption(uncertain_fringe_px >= 0 && uncertain_fringe_px <= 20, kStage,
+                "uncertain_fringe_px", "from 0 to 20");
 }
 
 ObjectClusterResult ExtractObjects(const cv::Mat& colour_bgr, const OrganizedCloud& cloud,
@@ -139,10 +180,20 @@ ObjectClusterResult ExtractObjects(const cv::Mat& colour_bgr, const OrganizedClo
     ++result.blobs;
     const cv::Rect roi = Grown(box, options, image);
     const cv::Mat blob = blobs(roi) == b;
-    const cv::Mat mask =
-        options.refine ? RefineWithGrabCut(colour_bgr, blob, refinement.non_ground(roi) & ~blob,
-                                           refinement.labels, roi)
-                       : blob;
+    cv::Mat mask = blob;
+    if (options.refine) {
+      cv::Mat core;
+      cv::erode(blob, core, cv::Mat());
+      // The refined object holds the core, so it is at least as tall: a core too tall (a trunk,
+      // a bush, a bench) is rejected before GrabCut is spent on it.
+      if (HighestPoint(cloud, ground.surface, core, roi) > options.max_height_m) {
+        ++result.rejected_size;
+        continue;
+      }
+      mask = RefineWithGrabCut(colour_bgr, blob, core, refinement.non_ground(roi) & ~blob,
+                               refinement.labels, roi, options.max_refine_pixels,
+                               options.uncertain_fringe_px);
+    }
     SegmentedObject object;
     if (cv::countNonZero(mask) < options.min_pixels ||
         !Measure(cloud, ground.surface, mask, roi, options, &object) ||

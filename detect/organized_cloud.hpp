@@ -16,13 +16,23 @@
 
 namespace littermap::detect {
 
+// PCL's integral-image normal estimators (pcl::IntegralImageNormalEstimation).
+enum class NormalMethod { kCovariance, kAverage3dGradient, kSimple3dGradient, kAverageDepthChange };
+
 struct OrganizedCloudOptions {
   float min_depth_m = 0.4f;  // nearer readings are sensor artefacts on a Kinect-class camera
   float max_depth_m = 4.5f;  // litter of a few cm is a handful of pixels beyond
-  // Integral-image normals (PCL, covariance method): neighbourhood size in pixels and the depth
-  // change (relative to depth) that stops smoothing across an edge.
+  // Integral-image normals (PCL, covariance method): neighbourhood size in pixels of the full
+  // image and the depth change (relative to depth) between neighbouring samples that stops
+  // smoothing across an edge.
   float normal_smoothing_px = 10.0f;
+  NormalMethod normal_method = NormalMethod::kCovariance;
   float max_depth_change_factor = 0.02f;
+  // Normals may be estimated on every normal_step_px-th pixel of every normal_step_px-th row
+  // and shared by the block: a step of 2 costs a quarter of the time (41 -> 11 ms a frame) and
+  // changes a normal by 1.4 deg (median), but blurs small objects into the ground (segmentation
+  // IoU 0.61 -> 0.57 on a park seed). The points themselves stay at full resolution.
+  int normal_step_px = 1;
   void Validate() const;
 };
 

@@ -57,7 +57,7 @@ SegmentationEvaluation EvaluateSegmentation(const std::filesystem::path& bag,
   for (const auto& [id, name] : class_of) ids.push_back(id);
 
   const RgbdFrameReader reader(bag, RgbdFrameOptions{});
-  FrameSegmenter segmenter(SegmentationOptions{});
+  FrameSegmenter segmenter(options.segmentation);
   std::map<std::string, ClassSums> sums;
   std::uint64_t done = 0;
   reader.ForEach(every, [&](const RgbdFrame& frame) {

@@ -9,11 +9,13 @@
 #include <string>
 
 #include "core/progress.hpp"
+#include "detect/frame_segmenter.hpp"
 
 namespace littermap::detect {
 
 struct SegmentationEvaluationOptions {
-  int min_depth_pixels = 100;  // an object showing fewer pixels with depth is not scored
+  int min_depth_pixels = 100;        // an object showing fewer pixels with depth is not scored
+  SegmentationOptions segmentation;  // the segmentation scored
 };
 
 struct ClassIou {

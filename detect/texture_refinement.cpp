@@ -57,6 +57,8 @@ cv::Mat GeometricLabels(const OrganizedCloud& cloud, const GroundResult& ground,
       (*heights)[index] = static_cast<float>(h);
       if (ground.is_ground[index] && std::abs(h) <= band) {
         row[u] = kGround;
+      } else if (h < -(band + options.max_depth_below_ground_m)) {
+        row[u] = kOutside;
       } else if (!ground.is_ground[index] && h > band + options.min_object_height_m) {
         row[u] = kNonGround;
       } else {
@@ -133,59 +135,61 @@ std::size_t GraphCut(const cv::Mat& colour_bgr, const cv::Mat& labels,
                      const std::vector<float>& heights, const OrganizedCloud& cloud,
                      const CutModels& models, const TextureRefinementOptions& options,
                      cv::Mat* non_ground) {
+  // The graph holds the uncertain pixels only: a few per cent of the frame.
+  std::vector<int> pixel_of_node;
   std::vector<int> node(labels.total(), -1);
-  int nodes = 0;
   for (std::size_t i = 0; i < labels.total(); ++i) {
-    if (labels.data[i] == kUncertain) node[i] = nodes++;
+    if (labels.data[i] != kUncertain) continue;
+    node[i] = static_cast<int>(pixel_of_node.size());
+    pixel_of_node.push_back(static_cast<int>(i));
   }
+  const int nodes = static_cast<int>(pixel_of_node.size());
   if (nodes == 0) return 0;
   cv::detail::GCGraph<double> graph(static_cast<unsigned>(nodes), static_cast<unsigned>(2 * nodes));
   const auto* colour = colour_bgr.ptr<cv::Vec3b>(0);
-  std::vector<double> source(static_cast<std::size_t>(nodes)),
-      sink(static_cast<std::size_t>(nodes));
-  for (std::size_t i = 0; i < labels.total(); ++i) {
-    if (node[i] < 0) continue;
-    graph.addVtx();
-    double to_ground = -models.ground(colour[i]);  // cost of calling the pixel ground
-    const double to_object = -models.non_ground(colour[i]);
-    if (!std::isnan(heights[i])) {
-      const float z = cloud.depth_m[i];
-      const double band = GroundBand(options, z);
-      to_ground += options.height_weight * std::clamp(heights[i] / band - 1.0, 0.0, 3.0);
-    }
-    source[static_cast<std::size_t>(node[i])] = to_ground;
-    sink[static_cast<std::size_t>(node[i])] = to_object;
-  }
-  const int width = labels.cols;
-  auto pair = [&](std::size_t a, std::size_t b) {
+  const int width = labels.cols, height = labels.rows;
+  auto smoothness = [&](int a, int b) {
     const cv::Vec3d d = cv::Vec3d(colour[a]) - cv::Vec3d(colour[b]);
-    const double w = options.smoothness_weight * std::exp(-models.beta * d.dot(d));
-    const int na = node[a], nb = node[b];
-    if (na >= 0 && nb >= 0) {
-      graph.addEdges(na, nb, w, w);
-    } else if (na >= 0 || nb >= 0) {
-      const int n = na >= 0 ? na : nb;
-      const std::uint8_t other = labels.data[na >= 0 ? b : a];
-      if (other == kGround) sink[static_cast<std::size_t>(n)] += w;
-      if (other == kNonGround) source[static_cast<std::size_t>(n)] += w;
-    }
+    return options.smoothness_weight * std::exp(-models.beta * d.dot(d));
   };
-  for (int v = 0; v < labels.rows; ++v) {
-    for (int u = 0; u < width; ++u) {
-      const auto i = static_cast<std::size_t>(v * width + u);
-      if (u + 1 < width) pair(i, i + 1);
-      if (v + 1 < labels.rows) pair(i, i + static_cast<std::size_t>(width));
+  for (int n = 0; n < nodes; ++n) graph.addVtx();
+  for (int n = 0; n < nodes; ++n) {
+    const int i = pixel_of_node[static_cast<std::size_t>(n)];
+    const auto index = static_cast<std::size_t>(i);
+    double to_ground = -models.ground(colour[i]);  // cost of calling the pixel ground
+    double to_object = -models.non_ground(colour[i]);
+    if (!std::isnan(heights[index])) {
+      const double band = GroundBand(options, cloud.depth_m[index]);
+      to_ground += options.height_weight * std::clamp(heights[index] / band - 1.0, 0.0, 3.0);
     }
+    // 4-neighbours: an edge to an uncertain one (added once, from its left or upper end), a
+    // terminal weight for a decided one.
+    const int u = i % width, v = i / width;
+    const int neighbours[4] = {u + 1 < width ? i + 1 : -1, v + 1 < height ? i + width : -1,
+                               u > 0 ? i - 1 : -1, v > 0 ? i - width : -1};
+    for (int k = 0; k < 4; ++k) {
+      const int j = neighbours[k];
+      if (j < 0) continue;
+      const int m = node[static_cast<std::size_t>(j)];
+      if (m >= 0) {
+        if (k < 2) {
+          const double w = smoothness(i, j);
+          graph.addEdges(n, m, w, w);
+        }
+        continue;
+      }
+      const std::uint8_t other = labels.data[j];
+      if (other == kGround) to_object += smoothness(i, j);
+      if (other == kNonGround) to_ground += smoothness(i, j);
+    }
+    graph.addTermWeights(n, to_ground, to_object);
   }
-  for (int n = 0; n < nodes; ++n)
-    graph.addTermWeights(n, source[static_cast<std::size_t>(n)], sink[static_cast<std::size_t>(n)]);
   graph.maxFlow();
   std::size_t cut = 0;
-  for (std::size_t i = 0; i < labels.total(); ++i) {
-    if (node[i] >= 0 && graph.inSourceSegment(node[i])) {
-      non_ground->data[i] = 255;
-      ++cut;
-    }
+  for (int n = 0; n < nodes; ++n) {
+    if (!graph.inSourceSegment(n)) continue;
+    non_ground->data[pixel_of_node[static_cast<std::size_t>(n)]] = 255;
+    ++cut;
   }
   return cut;
 }
@@ -193,11 +197,19 @@ std::size_t GraphCut(const cv::Mat& colour_bgr, const cv::Mat& labels,
 }  // namespace
 
 void TextureRefinementOptions::Validate() const {
-  if (gmm_components < 1 || max_training_pixels < 50 || !(depth_noise_per_m2 >= 0) ||
-      region_margin_px < 0 || !(min_ground_band_m > 0) || !(min_object_height_m >= 0) ||
-      !(smoothness_weight >= 0) || !(height_weight >= 0) || min_nonground_training_pixels < 1) {
-    throw UsageError("segmentation: texture refinement options out of range");
-  }
+  constexpr const char* kStage = "segmentation";
+  RequireOption(gmm_components >= 1 && gmm_components <= 20, kStage, "gmm_components",
+                "from 1 to 20");
+  RequireOption(max_training_pixels >= 50, kStage, "max_training_pixels", ">= 50");
+  RequireOption(depth_noise_per_m2 >= 0, kStage, "depth_noise_per_m2", ">= 0");
+  RequireOption(region_margin_px >= 0, kStage, "region_margin_px", ">= 0");
+  RequireOption(min_ground_band_m > 0, kStage, "min_ground_band_m", "> 0");
+  RequireOption(min_object_height_m >= 0, kStage, "min_object_height_m", ">= 0");
+  RequireOption(max_depth_below_ground_m >= 0, kStage, "max_depth_below_ground_m", ">= 0");
+  RequireOption(smoothness_weight >= 0, kStage, "smoothness_weight", ">= 0");
+  RequireOption(height_weight >= 0, kStage, "height_weight", ">= 0");
+  RequireOption(min_nonground_training_pixels >= 1, kStage, "min_nonground_training_pixels",
+                ">= 1");
 }
 
 TextureRefinementResult RefineGroundByTexture(const cv::Mat& colour_bgr,

@@ -33,6 +33,9 @@ struct TextureRefinementOptions {
   double depth_noise_per_m2 = 1.5e-3;
   double min_ground_band_m = 0.015;   // |height| a certain-ground point may have at least
   double min_object_height_m = 0.01;  // above the band: certain non-ground
+  // A point this far below the ground surface is off this ground (the floor beyond a table's
+  // edge, the far side of a ditch): neither ground nor an object on it, so not examined.
+  double max_depth_below_ground_m = 0.15;
   // A ground-component pixel whose colour is this much (log) likelier under the non-ground
   // model becomes uncertain: flat litter lies on the ground component.
   double colour_anomaly_log_ratio = 1.0;

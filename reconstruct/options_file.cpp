@@ -1,82 +1,46 @@
 #include "reconstruct/options_file.hpp"
 
-#include <cmath>
-#include <functional>
 #include <map>
-#include <type_traits>
-#include <vector>
+#include <utility>
 
-#include <yaml-cpp/yaml.h>
-
-#include "core/error.hpp"
-#include "core/yaml_fields.hpp"
+#include "core/options_file.hpp"
 
 namespace littermap::reconstruct {
 namespace {
 
-using Setter = std::function<void(const YAML::Node&, ReconstructionOptions*)>;
-
-// The node's value; numbers must be finite (YAML reads .nan and .inf as numbers).
-template <typename T>
-T Value(const YAML::Node& node) {
-  const T value = node.as<T>();
-  if constexpr (std::is_floating_point_v<T>) {
-    if (!std::isfinite(value)) throw BadInputError("must be a finite number");
-  } else if constexpr (std::is_same_v<T, std::vector<double>>) {
-    for (const double element : value) {
-      if (!std::isfinite(element)) throw BadInputError("must be finite numbers");
-    }
-  }
-  return value;
-}
-
-template <typename T, typename Field>
-Setter Set(Field field) {
-  return [field](const YAML::Node& node, ReconstructionOptions* options) {
-    field(*options) = Value<T>(node);
-  };
-}
+using O = ReconstructionOptions;
+using Setter = OptionSetter<O>;
 
 // A value of the RGB-D aligners of routine 3 and of visual odometry alike.
 template <typename T>
 Setter SetAligners(T RgbdAlignerOptions::*field) {
-  return [field](const YAML::Node& node, ReconstructionOptions* options) {
-    options->rgbd_tracker.aligner.*field = options->visual_odometry.aligner.*field = Value<T>(node);
-  };
-}
-
-// The value a name stands for, or BadInputError listing the names it takes.
-template <typename Enum>
-Enum Choice(const std::map<std::string, Enum>& names, const YAML::Node& node) {
-  const auto found = names.find(node.as<std::string>());
-  if (found == names.end()) {
-    std::string known;
-    for (const auto& [name, value] : names) known += (known.empty() ? "" : ", ") + name;
-    throw BadInputError("must be one of " + known);
-  }
-  return found->second;
-}
-
-// A named choice.
-template <typename Enum, typename Field>
-Setter SetChoice(std::map<std::string, Enum> names, Field field) {
-  return [names, field](const YAML::Node& node, ReconstructionOptions* options) {
-    field(*options) = Choice(names, node);
+  return [field](const YAML::Node& node, O* options) {
+    options->rgbd_tracker.aligner.*field = options->visual_odometry.aligner.*field =
+                                               OptionValue<T>(node);
   };
 }
 
 // A named choice, for both RGB-D aligners.
 template <typename Enum>
 Setter SetAligners(std::map<std::string, Enum> names, Enum RgbdAlignerOptions::*field) {
-  return [names, field](const YAML::Node& node, ReconstructionOptions* options) {
+  return [names, field](const YAML::Node& node, O* options) {
     options->rgbd_tracker.aligner.*field = options->visual_odometry.aligner.*field =
-                                               Choice(names, node);
+                                               OptionChoice(names, node);
   };
 }
 
-const std::map<std::string, Setter>& Setters() {
-  using O = ReconstructionOptions;
-  static const std::map<std::string, Setter> setters = {
+template <typename T, typename Field>
+Setter Set(Field field) {
+  return SetOption<T, O>(field);
+}
+
+template <typename Enum, typename Field>
+Setter SetChoice(std::map<std::string, Enum> names, Field field) {
+  return SetOptionChoice<O>(std::move(names), field);
+}
+
+const OptionSetters<O>& Setters() {
+  static const OptionSetters<O> setters = {
       {"scan_min_range_m", Set<double>([](O& o) -> double& { return o.slam.points.min_range_m; })},
       {"scan_max_range_m", Set<double>([](O& o) -> double& { return o.slam.points.max_range_m; })},
       {"scan_voxel_size_m", Set<double>([](O& o) -> double& { return o.slam.scan_voxel_size_m; })},
@@ -235,36 +199,10 @@ const std::map<std::string, Setter>& Setters() {
 
 }  // namespace
 
-std::vector<std::string> OptionsFileKeys() {
-  std::vector<std::string> keys;
-  for (const auto& [key, setter] : Setters()) keys.push_back(key);
-  return keys;
-}
+std::vector<std::string> OptionsFileKeys() { return OptionKeys(Setters()); }
 
 void ApplyOptionsFile(const std::filesystem::path& path, ReconstructionOptions* options) {
-  const YAML::Node root = LoadYamlFile(path);
-  if (root.IsNull()) return;
-  if (!root.IsMap()) throw BadInputError(path.string() + ": expected a map of option: value");
-  for (const auto& entry : root) {
-    const std::string key = entry.first.as<std::string>();
-    const auto setter = Setters().find(key);
-    if (setter == Setters().end()) {
-      throw BadInputError(path.string() + ": unknown option '" + key + "'");
-    }
-    try {
-      setter->second(entry.second, options);
-    } catch (const YAML::Exception&) {
-      throw BadInputError(path.string() + ": option '" + key + "' has a value of the wrong type");
-    } catch (const BadInputError& e) {
-      throw BadInputError(path.string() + ": option '" + key + "' " + e.what());
-    }
-  }
-  // Values each valid alone may still not go together (a range below a minimum range).
-  try {
-    options->Validate();
-  } catch (const UsageError& e) {
-    throw BadInputError(path.string() + ": " + e.what());
-  }
+  littermap::ApplyOptionsFile(path, Setters(), options);
 }
 
 }  // namespace littermap::reconstruct
