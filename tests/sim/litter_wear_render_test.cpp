@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "sim/litter_wear.hpp"
+#include "sim/noiseless_camera.hpp"
 #include "sim/rgbd_camera.hpp"
 #include "support/angles.hpp"
 
@@ -24,15 +25,6 @@ Eigen::Isometry3d RobotCamera() {
   T.linear() = RotationFromRpy({0, 25 * kDeg, 0}) * R_body_optical;
   T.translation() = Eigen::Vector3d(5, 10, 0.5);
   return T;
-}
-
-RgbdCameraOptions NoiseFreeOptions() {
-  RgbdCameraOptions options;
-  options.depth.noise_coefficient_per_m = 0;
-  options.depth.quantise = false;
-  options.depth.edge_dropout_probability = 0;
-  options.colour_noise_sigma_dn = 0;
-  return options;
 }
 
 // A flat 20 m x 20 m park of grass, or of gravel (hundreds of overlapping 3 m gravel patches).
@@ -67,7 +59,7 @@ RgbdRender RenderWith(World world, WorldObject item) {
       std::abs(item.orientation.pitch_rad) > 1 ? item.size_m.x() : item.size_m.z();
   item.center_m = {6.2, 10, 0.5 * height};
   AddObject(world, item);
-  return RenderRgbd(world, RobotCamera(), NoiseFreeOptions(), 1);
+  return RenderRgbd(world, RobotCamera(), NoiselessCameraOptions(), 1);
 }
 
 struct PixelStats {  // means over a mask, 8-bit sRGB
@@ -156,7 +148,7 @@ TEST(LitterWearRender, ClearBottleTakesTheColourOfTheGroundBehind) {
     LitterWear wear;
     wear.transmission = 0.85;
     ApplyLitterWear(wear, clear);
-    const RgbdRender empty = RenderRgbd(world, RobotCamera(), NoiseFreeOptions(), 1);
+    const RgbdRender empty = RenderRgbd(world, RobotCamera(), NoiselessCameraOptions(), 1);
     const RgbdRender a = RenderWith(world, opaque), b = RenderWith(world, clear);
     // The ground behind each of the bottle's pixels is that pixel of the render without it.
     const cv::Mat mask = MaskOf(b);

@@ -1,6 +1,7 @@
 // Tests of the simulated RGB-D camera against analytic geometry and the Kinect noise model.
 
 #include "sim/rgbd_camera.hpp"
+#include "sim/noiseless_camera.hpp"
 #include "support/angles.hpp"
 
 #include <cmath>
@@ -32,15 +33,6 @@ World FlatWorld() {
   return world;
 }
 
-RgbdCameraOptions NoiselessOptions() {
-  RgbdCameraOptions options;
-  options.depth.noise_coefficient_per_m = 0;
-  options.depth.quantise = false;
-  options.depth.edge_dropout_probability = 0;
-  options.colour_noise_sigma_dn = 0;
-  return options;
-}
-
 WorldObject Primitive(Shape shape, const Eigen::Vector3d& centre, const Eigen::Vector3d& size,
                       const RollPitchYaw& rpy = {}) {
   WorldObject o;
@@ -65,7 +57,7 @@ TEST(RgbdCameraTest, GroundDepthMatchesRayPlaneIntersection) {
   const World world = FlatWorld();
   const Eigen::Isometry3d T = CameraPose({5, 10, 0.5}, 0, 25 * kDeg);
   for (const bool quantise : {false, true}) {
-    RgbdCameraOptions options = NoiselessOptions();
+    RgbdCameraOptions options = NoiselessCameraOptions();
     options.depth.quantise = quantise;
     const RgbdRender render = RenderRgbd(world, T, options, 1);
     const PinholeCamera& k = options.intrinsics;
@@ -147,7 +139,7 @@ TEST(RgbdCameraTest, ObjectAppearsWhereItsCentreProjects) {
   // A can standing on the ground 1.5 m ahead and 0.3 m to the left.
   const Eigen::Vector3d can_centre(6.5, 10.3, 0.06);
   AddObject(world, Primitive(Shape::kCylinder, can_centre, {0.066, 0.066, 0.12}));
-  const RgbdCameraOptions options = NoiselessOptions();
+  const RgbdCameraOptions options = NoiselessCameraOptions();
   const RgbdRender render = RenderRgbd(world, T, options, 1);
   const PinholeCamera& k = options.intrinsics;
   for (int id = 0; id < 2; ++id) {
@@ -195,7 +187,7 @@ cv::Mat ProjectedSilhouette(const WorldObject& o, const Eigen::Isometry3d& T,
 
 TEST(RgbdCameraTest, InstanceMaskMatchesProjectedPrimitive) {
   const Eigen::Isometry3d T = CameraPose({5, 10, 0.5}, 0, 25 * kDeg);
-  const RgbdCameraOptions options = NoiselessOptions();
+  const RgbdCameraOptions options = NoiselessCameraOptions();
   const std::vector<WorldObject> objects = {
       Primitive(Shape::kBox, {6.2, 10.1, 0.2}, {0.3, 0.2, 0.15}, {0.3, 0.2, 0.7}),
       Primitive(Shape::kCylinder, {6.0, 9.8, 0.1}, {0.1, 0.1, 0.25}, {1.2, 0, 0.4}),
@@ -219,7 +211,7 @@ TEST(RgbdCameraTest, DropsAboutHalfTheDepthAtObjectEdges) {
   World world = FlatWorld();
   // A box floating 2 m ahead: all its outline is a depth discontinuity against the ground behind.
   AddObject(world, Primitive(Shape::kBox, {7.0, 10.0, 0.5}, {0.3, 0.5, 0.4}));
-  RgbdCameraOptions options = NoiselessOptions();
+  RgbdCameraOptions options = NoiselessCameraOptions();
   options.depth.edge_dropout_probability = 0.5;
   const Eigen::Isometry3d T = CameraPose({5, 10, 0.5}, 0, 10 * kDeg);
   const RgbdRender render = RenderRgbd(world, T, options, 9);
