@@ -45,10 +45,6 @@ class EnvironmentError : public Error {
   explicit EnvironmentError(const std::string& message) : Error(ErrorKind::kEnvironment, message) {}
 };
 
-}  // namespace littermap
-
-namespace littermap {
-
 // Throws UsageError "`stage`: `key` must be `rule`" unless ok: one line per option in Validate().
 inline void RequireOption(bool ok, const char* stage, const char* key, const char* rule) {
   if (!ok) throw UsageError(std::string(stage) + ": " + key + " must be " + rule);

@@ -149,14 +149,13 @@ cv::Mat ReadMatrix(const cv::FileNode& node, const std::string& field, int rows,
 }  // namespace
 
 void ColourGmmOptions::Validate() const {
-  const auto require = [](bool ok, const char* what) {
-    if (!ok) throw UsageError(std::string("colour GMM: ") + what);
-  };
-  require(components >= 1, "components must be >= 1");
-  require(max_samples >= components, "max_samples must be >= components");
-  require(max_em_iterations >= 1, "max_em_iterations must be >= 1");
-  require(em_relative_tolerance > 0, "em_relative_tolerance must be > 0");
-  require(min_variance > 0 && std::isfinite(min_variance), "min_variance must be > 0, finite");
+  constexpr const char* kStage = "colour GMM";
+  RequireOption(components >= 1, kStage, "components", ">= 1");
+  RequireOption(max_samples >= components, kStage, "max_samples", ">= components");
+  RequireOption(max_em_iterations >= 1, kStage, "max_em_iterations", ">= 1");
+  RequireOption(em_relative_tolerance > 0, kStage, "em_relative_tolerance", "> 0");
+  RequireOption(min_variance > 0 && std::isfinite(min_variance), kStage, "min_variance",
+                "> 0, finite");
 }
 
 ColourGmm::ColourGmm(const ColourGmmOptions& options) : options_(options) { options_.Validate(); }

@@ -27,7 +27,7 @@ enum PixelLabel : std::uint8_t {
 };
 
 struct TextureRefinementOptions {
-  int gmm_components = 5;         // K of the K-means initialisation and of each GMM
+  int gmm_components = 5;  // K of the K-means initialisation and of each GMM
   // Colours per model, sampled evenly: 80 per component describe a surface; OpenCV's EM costs
   // about 3 us per colour, and 800 took 5 ms a frame for no better segmentation (IoU 0.616 with
   // 800, 0.636 with 400 on a park seed).
