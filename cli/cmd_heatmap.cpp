@@ -9,6 +9,7 @@
 #include "cli/cli_context.hpp"
 #include "cli/option_checks.hpp"
 #include "core/utc_date.hpp"
+#include "db/site_locator.hpp"
 #include "heatmap/heatmap_files.hpp"
 
 namespace littermap::cli {
@@ -25,8 +26,8 @@ struct HeatmapArguments {
 void RunHeatmap(HeatmapArguments arguments, CliContext& context) {
   arguments.options.map.from_time_s = ParseUtcDate(arguments.from, "--from");
   arguments.options.map.to_time_s = ParseUtcDate(arguments.to, "--to");
-  const heatmap::HeatmapFilesResult result =
-      heatmap::WriteHeatmapFiles(arguments.site, arguments.output, arguments.options);
+  const heatmap::HeatmapFilesResult result = heatmap::WriteHeatmapFiles(
+      db::ParseSiteLocator(arguments.site), arguments.output, arguments.options);
   for (const std::string& warning : result.warnings) context.Warn(warning);
   std::printf("%s\n", heatmap::HeatmapSummary(result, arguments.output).c_str());
 }
@@ -36,7 +37,10 @@ void RunHeatmap(HeatmapArguments arguments, CliContext& context) {
 void RegisterHeatmapCommand(CLI::App& app, CliContext& context) {
   auto arguments = std::make_shared<HeatmapArguments>();
   CLI::App* command = context.AddCommand(app, "heatmap", "Litter density maps of a site");
-  command->add_option("SITE", arguments->site, "Site database (SITE.gpkg)")->required();
+  command
+      ->add_option("SITE", arguments->site,
+                   "Site database: SITE.gpkg, or postgresql://[USER@HOST]/DB?site=NAME")
+      ->required();
   command->add_option("-o,--output", arguments->output, "Output directory")->required();
   command->add_flag("--force", arguments->options.force_output,
                     "Write into an output folder that holds files littermap does not write there");

@@ -11,6 +11,7 @@
 
 #include "cli/cli_context.hpp"
 #include "cli/option_checks.hpp"
+#include "db/site_locator.hpp"
 #include "site/run_directory_ingest.hpp"
 
 namespace littermap::cli {
@@ -32,10 +33,11 @@ std::optional<PlanarPose> PoseArgument(const std::vector<double>& values) {
 void RunIngest(IngestArguments arguments, CliContext& context) {
   arguments.options.placement.initial = PoseArgument(arguments.initial);
   arguments.options.placement.transform = PoseArgument(arguments.transform);
+  const db::SiteLocator site = db::ParseSiteLocator(arguments.site);
   const site::RunDirectoryIngestResult result =
-      site::IngestRunDirectory(arguments.site, arguments.run_dir, arguments.options);
+      site::IngestRunDirectory(site, arguments.run_dir, arguments.options);
   for (const std::string& warning : result.warnings) context.Warn(warning);
-  std::printf("%s\n", site::IngestSummary(result, arguments.site).c_str());
+  std::printf("%s\n", site::IngestSummary(result, site.display).c_str());
 }
 
 }  // namespace
@@ -44,7 +46,10 @@ void RegisterIngestCommand(CLI::App& app, CliContext& context) {
   auto arguments = std::make_shared<IngestArguments>();
   CLI::App* ingest =
       context.AddCommand(app, "ingest", "Add a reconstructed run to a site database");
-  ingest->add_option("SITE", arguments->site, "Site database (SITE.gpkg)")->required();
+  ingest
+      ->add_option("SITE", arguments->site,
+                   "Site database: SITE.gpkg, or postgresql://[USER@HOST]/DB?site=NAME")
+      ->required();
   ingest
       ->add_option("RUN_DIR", arguments->run_dir, "Run directory with trajectory.tum and items.csv")
       ->required();

@@ -8,6 +8,7 @@
 #include "cli/cli_context.hpp"
 #include "cli/option_checks.hpp"
 #include "core/utc_date.hpp"
+#include "db/site_locator.hpp"
 #include "reports/report_files.hpp"
 
 namespace littermap::cli {
@@ -24,8 +25,8 @@ struct ReportArguments {
 void RunReport(ReportArguments arguments) {
   arguments.options.figures.from_time_s = ParseUtcDate(arguments.from, "--from");
   arguments.options.figures.to_time_s = ParseUtcDate(arguments.to, "--to");
-  const reports::SiteReport report =
-      reports::WriteReportFiles(arguments.site, arguments.output, arguments.options);
+  const reports::SiteReport report = reports::WriteReportFiles(db::ParseSiteLocator(arguments.site),
+                                                               arguments.output, arguments.options);
   std::printf("%s\n", reports::ReportSummary(report, arguments.output).c_str());
 }
 
@@ -35,7 +36,10 @@ void RegisterReportCommand(CLI::App& app, CliContext& context) {
   auto arguments = std::make_shared<ReportArguments>();
   CLI::App* command = context.AddCommand(
       app, "report", "HTML report of a site for park staff (index.html and report.json)");
-  command->add_option("SITE", arguments->site, "Site database (SITE.gpkg)")->required();
+  command
+      ->add_option("SITE", arguments->site,
+                   "Site database: SITE.gpkg, or postgresql://[USER@HOST]/DB?site=NAME")
+      ->required();
   command->add_option("-o,--output", arguments->output, "Output directory")->required();
   command->add_flag("--force", arguments->options.force_output,
                     "Write into an output folder that holds files littermap does not write there");

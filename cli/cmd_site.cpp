@@ -1,5 +1,6 @@
-// littermap site init SITE.gpkg --name NAME [--crs EPSG:N --origin E N --rotation DEG]:
-// creates a site database (a GeoPackage) in a local frame or placed in a projected CRS.
+// littermap site init SITE --name NAME [--crs EPSG:N --origin E N --rotation DEG]: creates a
+// site database (a GeoPackage file, or a schema of a PostGIS database) in a local frame or placed
+// in a projected CRS.
 
 #include <cstdio>
 #include <memory>
@@ -26,8 +27,9 @@ void RunSiteInit(SiteInitArguments arguments) {
     arguments.options.origin_easting_m = arguments.origin[0];
     arguments.options.origin_northing_m = arguments.origin[1];
   }
-  const db::SiteDatabase site = db::SiteDatabase::Create(arguments.file, arguments.options);
-  std::printf("Created site '%s' in %s: %s\n", site.site().name.c_str(), arguments.file.c_str(),
+  const db::SiteLocator where = db::ParseSiteLocator(arguments.file);
+  const db::SiteDatabase site = db::SiteDatabase::Create(where, arguments.options);
+  std::printf("Created site '%s' in %s: %s\n", site.site().name.c_str(), where.display.c_str(),
               db::Describe(site.site().frame).c_str());
 }
 
@@ -37,8 +39,11 @@ void RegisterSiteCommands(CLI::App& app, CliContext& context) {
   CLI::App* site = context.AddCommand(app, "site", "Create and manage site databases");
   site->require_subcommand(1);
   auto arguments = std::make_shared<SiteInitArguments>();
-  CLI::App* init = context.AddCommand(*site, "init", "Create a site database (a GeoPackage)");
-  init->add_option("SITE", arguments->file, "Site database to create (SITE.gpkg)")->required();
+  CLI::App* init = context.AddCommand(*site, "init",
+                                      "Create a site database (a GeoPackage or a PostGIS schema)");
+  init->add_option("SITE", arguments->file,
+                   "Site database to create: SITE.gpkg, or postgresql://[USER@HOST]/DB?site=NAME")
+      ->required();
   init->add_option("--name", arguments->options.name, "Site name")->required();
   CLI::Option* crs = init->add_option("--crs", arguments->crs,
                                       "Projected CRS of the site, EPSG:N (default: local frame)");

@@ -8,14 +8,16 @@
 #include "cli/cli_context.hpp"
 #include "cli/option_checks.hpp"
 #include "cli/sensor_arguments.hpp"
+#include "db/site_locator.hpp"
 #include "reports/survey.hpp"
 #include "reports/survey_summary.hpp"
 
 namespace littermap::cli {
 namespace {
 
-void RunSurvey(reports::SurveyOptions options, const SensorArguments& sensors,
-               CliContext& context) {
+void RunSurvey(reports::SurveyOptions options, const std::string& site,
+               const SensorArguments& sensors, CliContext& context) {
+  options.site = db::ParseSiteLocator(site, "--site");
   if (options.detect.model.empty()) options.detect.model = LITTERMAP_DEFAULT_MODEL;
   options.reconstruct.topic_roles = options.detect.topic_roles = sensors.Roles();
   options.reconstruct.reconstruction.stamps = options.detect.objects.frames.stamps =
@@ -37,11 +39,16 @@ void RunSurvey(reports::SurveyOptions options, const SensorArguments& sensors,
 void RegisterSurveyCommand(CLI::App& app, CliContext& context) {
   auto options = std::make_shared<reports::SurveyOptions>();
   auto sensors = std::make_shared<SensorArguments>();
+  auto site = std::make_shared<std::string>();
   CLI::App* command = context.AddCommand(
       app, "survey",
       "Reconstruct, detect, ingest, heatmap and report in one go, resuming where it stopped");
   command->add_option("BAG", options->bag, "Run bag directory")->required();
-  command->add_option("--site", options->site, "Site database (created when missing)")->required();
+  command
+      ->add_option("--site", *site,
+                   "Site database, created when missing: SITE.gpkg, or "
+                   "postgresql://[USER@HOST]/DB?site=NAME")
+      ->required();
   command->add_option("-o,--output", options->output_dir,
                       "Output directory (default: NAME-survey in the current directory)");
   command->add_option(
@@ -60,8 +67,10 @@ void RegisterSurveyCommand(CLI::App& app, CliContext& context) {
       ->check(WholeNumber(1, kMaxHotspotMinItems));
   command->add_flag("--force", options->force, "Redo every stage, even if up to date");
   AddSensorOptions(command, *sensors);
-  command->callback([options, sensors, &context] {
-    context.run = [options, sensors, &context] { RunSurvey(*options, *sensors, context); };
+  command->callback([options, site, sensors, &context] {
+    context.run = [options, site, sensors, &context] {
+      RunSurvey(*options, *site, *sensors, context);
+    };
   });
 }
 

@@ -39,10 +39,26 @@ void PutHeader(Writer& writer, std::int32_t srs_id, const Envelope& envelope) {
   writer.Put(envelope.max_y);
 }
 
+void PutWkb(Writer& writer, WkbType type, std::span<const PointXY> points) {
+  if (type == WkbType::kPoint && points.size() != 1) {
+    throw UsageError("a POINT geometry has exactly one point");
+  }
+  if (type == WkbType::kLineString && points.size() < 2) {
+    throw UsageError("a LINESTRING geometry needs at least two points");
+  }
+  writer.Put<std::uint8_t>(1);  // WKB little-endian
+  writer.Put(static_cast<std::uint32_t>(type));
+  if (type == WkbType::kLineString) writer.Put(static_cast<std::uint32_t>(points.size()));
+  for (const PointXY& p : points) {
+    writer.Put(p.x);
+    writer.Put(p.y);
+  }
+}
+
 class Reader {
  public:
-  Reader(std::span<const std::uint8_t> bytes, const std::string& where)
-      : bytes_(bytes), where_(where) {}
+  Reader(std::span<const std::uint8_t> bytes, const std::string& where, const char* format)
+      : bytes_(bytes), where_(where), format_(format) {}
 
   template <typename T>
   T Get(bool little_endian) {
@@ -57,14 +73,36 @@ class Reader {
   }
   std::uint8_t Byte() { return Get<std::uint8_t>(true); }
   [[noreturn]] void Fail(const std::string& what) const {
-    throw BadInputError(where_ + ": not a GeoPackage geometry: " + what);
+    throw BadInputError(where_ + ": not " + format_ + ": " + what);
   }
 
  private:
   std::span<const std::uint8_t> bytes_;
   std::string where_;
+  const char* format_;
   std::size_t offset_ = 0;
 };
+
+// The WKB that follows the reader's position: a 2D POINT or LINESTRING.
+void GetWkb(Reader& reader, std::size_t size, GeometryBlob& geometry) {
+  const std::uint8_t wkb_order = reader.Byte();
+  if (wkb_order > 1) reader.Fail("WKB byte order " + std::to_string(wkb_order) + " is invalid");
+  const bool wkb_le = wkb_order == 1;
+  const auto type = reader.Get<std::uint32_t>(wkb_le);
+  std::uint32_t count = 1;
+  if (type == static_cast<std::uint32_t>(WkbType::kLineString)) {
+    count = reader.Get<std::uint32_t>(wkb_le);
+  } else if (type != static_cast<std::uint32_t>(WkbType::kPoint)) {
+    reader.Fail("WKB type " + std::to_string(type) + " is not a 2D POINT or LINESTRING");
+  }
+  if (count > size / 16) reader.Fail("point count " + std::to_string(count) + " exceeds blob");
+  geometry.type = static_cast<WkbType>(type);
+  geometry.points.resize(count);
+  for (PointXY& p : geometry.points) {
+    p.x = reader.Get<double>(wkb_le);
+    p.y = reader.Get<double>(wkb_le);
+  }
+}
 
 std::size_t EnvelopeDoubles(std::uint8_t indicator, const Reader& reader) {
   switch (indicator) {
@@ -97,32 +135,28 @@ Envelope EnvelopeOf(std::span<const PointXY> points) {
   return envelope;
 }
 
+std::vector<std::uint8_t> EncodeWkb(WkbType type, std::span<const PointXY> points) {
+  Writer writer;
+  PutWkb(writer, type, points);
+  return std::move(writer.out);
+}
+
 std::vector<std::uint8_t> EncodePoint(const PointXY& point, std::int32_t srs_id) {
   Writer writer;
   PutHeader(writer, srs_id, {point.x, point.x, point.y, point.y});
-  writer.Put<std::uint8_t>(1);  // WKB little-endian
-  writer.Put(static_cast<std::uint32_t>(WkbType::kPoint));
-  writer.Put(point.x);
-  writer.Put(point.y);
+  PutWkb(writer, WkbType::kPoint, std::span(&point, 1));
   return std::move(writer.out);
 }
 
 std::vector<std::uint8_t> EncodeLineString(std::span<const PointXY> points, std::int32_t srs_id) {
-  if (points.size() < 2) throw UsageError("a LINESTRING geometry needs at least two points");
   Writer writer;
   PutHeader(writer, srs_id, EnvelopeOf(points));
-  writer.Put<std::uint8_t>(1);
-  writer.Put(static_cast<std::uint32_t>(WkbType::kLineString));
-  writer.Put(static_cast<std::uint32_t>(points.size()));
-  for (const PointXY& p : points) {
-    writer.Put(p.x);
-    writer.Put(p.y);
-  }
+  PutWkb(writer, WkbType::kLineString, points);
   return std::move(writer.out);
 }
 
 GeometryBlob DecodeGeometry(std::span<const std::uint8_t> blob, const std::string& where) {
-  Reader reader(blob, where);
+  Reader reader(blob, where, "a GeoPackage geometry");
   if (reader.Byte() != 'G' || reader.Byte() != 'P') reader.Fail("magic is not 'GP'");
   if (const std::uint8_t version = reader.Byte(); version != 0) {
     reader.Fail("version " + std::to_string(version) + " is not 0");
@@ -140,24 +174,14 @@ GeometryBlob DecodeGeometry(std::span<const std::uint8_t> blob, const std::strin
   geometry.has_envelope = doubles > 0;
   geometry.envelope = {envelope[0], envelope[1], envelope[2], envelope[3]};
 
-  const std::uint8_t wkb_order = reader.Byte();
-  if (wkb_order > 1) reader.Fail("WKB byte order " + std::to_string(wkb_order) + " is invalid");
-  const bool wkb_le = wkb_order == 1;
-  const auto type = reader.Get<std::uint32_t>(wkb_le);
-  std::uint32_t count = 1;
-  if (type == static_cast<std::uint32_t>(WkbType::kLineString)) {
-    count = reader.Get<std::uint32_t>(wkb_le);
-  } else if (type != static_cast<std::uint32_t>(WkbType::kPoint)) {
-    reader.Fail("WKB type " + std::to_string(type) + " is not a 2D POINT or LINESTRING");
-  }
-  if (count > blob.size() / 16)
-    reader.Fail("point count " + std::to_string(count) + " exceeds blob");
-  geometry.type = static_cast<WkbType>(type);
-  geometry.points.resize(count);
-  for (PointXY& p : geometry.points) {
-    p.x = reader.Get<double>(wkb_le);
-    p.y = reader.Get<double>(wkb_le);
-  }
+  GetWkb(reader, blob.size(), geometry);
+  return geometry;
+}
+
+GeometryBlob DecodeWkb(std::span<const std::uint8_t> wkb, const std::string& where) {
+  Reader reader(wkb, where, "a WKB geometry");
+  GeometryBlob geometry;
+  GetWkb(reader, wkb.size(), geometry);
   return geometry;
 }
 

@@ -36,6 +36,12 @@ std::vector<std::uint8_t> EncodePoint(const PointXY& point, std::int32_t srs_id)
 // A LINESTRING needs at least two points (OGC simple features); throws UsageError otherwise.
 std::vector<std::uint8_t> EncodeLineString(std::span<const PointXY> points, std::int32_t srs_id);
 
+// Plain little-endian ISO WKB (what PostGIS's ST_GeomFromWKB reads and ST_AsBinary writes).
+// Throws UsageError for a POINT without exactly one point or a LINESTRING of fewer than two.
+std::vector<std::uint8_t> EncodeWkb(WkbType type, std::span<const PointXY> points);
+// Reads either byte order; srs_id stays 0 and there is no envelope.
+GeometryBlob DecodeWkb(std::span<const std::uint8_t> wkb, const std::string& where);
+
 // Reads either byte order in header and WKB. Throws BadInputError naming `where` (table and fid)
 // when the blob is not a 2D POINT/LINESTRING GeoPackage geometry.
 GeometryBlob DecodeGeometry(std::span<const std::uint8_t> blob, const std::string& where);

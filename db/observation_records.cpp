@@ -4,78 +4,77 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "db/geopackage_schema.hpp"
 #include "db/site_database.hpp"
 
 namespace littermap::db {
 
 void SiteDatabase::MarkItemSeen(std::int64_t fid, std::int64_t run_id) {
-  SqliteStatement update = database_.Prepare(
-      "UPDATE litter_items SET last_run_id = max(last_run_id, ?1), times_seen = times_seen + 1 "
-      "WHERE fid = ?2");
-  update.Bind(1, run_id);
-  update.Bind(2, fid);
-  update.Run();
+  const auto update = connection_->Prepare(
+      "UPDATE litter_items SET last_run_id = CASE WHEN last_run_id > ?1 THEN last_run_id ELSE ?1 "
+      "END, times_seen = times_seen + 1 WHERE fid = ?2");
+  update->Bind(1, run_id);
+  update->Bind(2, fid);
+  update->Run();
 }
 
 void SiteDatabase::AddDetection(const DetectionRecord& detection) {
-  SqliteStatement insert = database_.Prepare(
+  const auto insert = connection_->Prepare(
       "INSERT INTO detections (run_id, item_fid, run_item_id, class, site_x_m, site_y_m, z_m, "
       "size_m, confidence) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
-  insert.Bind(1, detection.run_id);
+  insert->Bind(1, detection.run_id);
   if (detection.item_fid) {
-    insert.Bind(2, *detection.item_fid);
+    insert->Bind(2, *detection.item_fid);
   } else {
-    insert.BindNull(2);
+    insert->BindNull(2);
   }
-  insert.Bind(3, detection.run_item_id);
-  insert.Bind(4, detection.class_name);
-  insert.BindReal(5, detection.site_xy.x);
-  insert.BindReal(6, detection.site_xy.y);
-  insert.BindReal(7, detection.z_m);
-  insert.BindReal(8, detection.size_m);
-  insert.BindReal(9, detection.confidence);
-  insert.Run();
+  insert->Bind(3, detection.run_item_id);
+  insert->Bind(4, detection.class_name);
+  insert->BindReal(5, detection.site_xy.x);
+  insert->BindReal(6, detection.site_xy.y);
+  insert->BindReal(7, detection.z_m);
+  insert->BindReal(8, detection.size_m);
+  insert->BindReal(9, detection.confidence);
+  insert->Run();
 }
 
 std::size_t SiteDatabase::DetectionCount(std::int64_t run_id) {
-  SqliteStatement query = database_.Prepare("SELECT count(*) FROM detections WHERE run_id = ?");
-  query.Bind(1, run_id);
-  return query.Step() ? static_cast<std::size_t>(query.ColumnInt64(0)) : 0;
+  const auto query = connection_->Prepare("SELECT count(*) FROM detections WHERE run_id = ?");
+  query->Bind(1, run_id);
+  return query->Step() ? static_cast<std::size_t>(query->ColumnInt64(0)) : 0;
 }
 
 std::vector<DetectionRecord> SiteDatabase::Detections(const std::vector<std::int64_t>& run_ids) {
-  SqliteStatement query = database_.Prepare(
+  const auto query = connection_->Prepare(
       "SELECT item_fid, run_item_id, class, site_x_m, site_y_m, z_m, size_m, confidence "
       "FROM detections WHERE run_id = ? ORDER BY detection_id");
   std::vector<DetectionRecord> detections;
   for (std::int64_t run_id : run_ids) {
-    query.Bind(1, run_id);
-    while (query.Step()) {
+    query->Bind(1, run_id);
+    while (query->Step()) {
       DetectionRecord detection;
       detection.run_id = run_id;
-      if (!query.ColumnIsNull(0)) detection.item_fid = query.ColumnInt64(0);
-      detection.run_item_id = query.ColumnText(1);
-      detection.class_name = query.ColumnText(2);
-      detection.site_xy = {query.ColumnDouble(3), query.ColumnDouble(4)};
-      detection.z_m = query.ColumnDouble(5);
-      detection.size_m = query.ColumnDouble(6);
-      detection.confidence = query.ColumnDouble(7);
+      if (!query->ColumnIsNull(0)) detection.item_fid = query->ColumnInt64(0);
+      detection.run_item_id = query->ColumnText(1);
+      detection.class_name = query->ColumnText(2);
+      detection.site_xy = {query->ColumnDouble(3), query->ColumnDouble(4)};
+      detection.z_m = query->ColumnDouble(5);
+      detection.size_m = query->ColumnDouble(6);
+      detection.confidence = query->ColumnDouble(7);
       detections.push_back(std::move(detection));
     }
-    query.Reset();
+    query->Reset();
   }
   return detections;
 }
 
 std::vector<ItemRecord> SiteDatabase::ItemsSeenBy(const std::vector<std::int64_t>& run_ids) {
   std::set<std::int64_t> fids;
-  SqliteStatement query = database_.Prepare(
+  const auto query = connection_->Prepare(
       "SELECT DISTINCT item_fid FROM detections WHERE run_id = ? AND item_fid IS NOT NULL");
   for (std::int64_t run_id : run_ids) {
-    query.Bind(1, run_id);
-    while (query.Step()) fids.insert(query.ColumnInt64(0));
-    query.Reset();
+    query->Bind(1, run_id);
+    while (query->Step()) fids.insert(query->ColumnInt64(0));
+    query->Reset();
   }
   std::vector<ItemRecord> items = Items();
   std::erase_if(items, [&](const ItemRecord& item) { return !fids.count(item.fid); });
@@ -87,38 +86,37 @@ void SiteDatabase::AddCoverage(const CoverageRecord& coverage) {
     throw UsageError("coverage of run " + std::to_string(coverage.run_id) +
                      ": mask size does not match width x height");
   }
-  SqliteStatement insert = database_.Prepare(
+  const auto insert = connection_->Prepare(
       "INSERT INTO coverage (run_id, cell_size_m, origin_x_m, origin_y_m, width, height, "
       "observed_area_m2, encoding, data) VALUES (?, ?, ?, ?, ?, ?, ?, 'u8-rowmajor-nw', ?)");
-  insert.Bind(1, coverage.run_id);
-  insert.BindReal(2, coverage.cell_size_m);
-  insert.BindReal(3, coverage.min_x_m);
-  insert.BindReal(4, coverage.max_y_m);
-  insert.Bind(5, std::int64_t{coverage.width});
-  insert.Bind(6, std::int64_t{coverage.height});
-  insert.BindReal(7, coverage.observed_area_m2);
-  insert.BindBlob(8, coverage.observed);
-  insert.Run();
+  insert->Bind(1, coverage.run_id);
+  insert->BindReal(2, coverage.cell_size_m);
+  insert->BindReal(3, coverage.min_x_m);
+  insert->BindReal(4, coverage.max_y_m);
+  insert->Bind(5, std::int64_t{coverage.width});
+  insert->Bind(6, std::int64_t{coverage.height});
+  insert->BindReal(7, coverage.observed_area_m2);
+  insert->BindBlob(8, coverage.observed);
+  insert->Run();
 }
 
 std::vector<CoverageRecord> SiteDatabase::Coverages() {
-  SqliteStatement query = database_.Prepare(
+  const auto query = connection_->Prepare(
       "SELECT run_id, cell_size_m, origin_x_m, origin_y_m, width, height, observed_area_m2, "
       "encoding, data FROM coverage ORDER BY run_id");
   std::vector<CoverageRecord> coverages;
-  while (query.Step()) {
+  while (query->Step()) {
     CoverageRecord coverage;
-    coverage.run_id = query.ColumnInt64(0);
-    coverage.cell_size_m = query.ColumnDouble(1);
-    coverage.min_x_m = query.ColumnDouble(2);
-    coverage.max_y_m = query.ColumnDouble(3);
-    coverage.width = static_cast<int>(query.ColumnInt64(4));
-    coverage.height = static_cast<int>(query.ColumnInt64(5));
-    coverage.observed_area_m2 = query.ColumnDouble(6);
-    const auto blob = query.ColumnBlob(8);
-    const std::string where =
-        database_.file().string() + ": coverage of run " + std::to_string(coverage.run_id);
-    if (query.ColumnText(7) != "u8-rowmajor-nw") throw BadInputError(where + ": unknown encoding");
+    coverage.run_id = query->ColumnInt64(0);
+    coverage.cell_size_m = query->ColumnDouble(1);
+    coverage.min_x_m = query->ColumnDouble(2);
+    coverage.max_y_m = query->ColumnDouble(3);
+    coverage.width = static_cast<int>(query->ColumnInt64(4));
+    coverage.height = static_cast<int>(query->ColumnInt64(5));
+    coverage.observed_area_m2 = query->ColumnDouble(6);
+    const auto blob = query->ColumnBlob(8);
+    const std::string where = name() + ": coverage of run " + std::to_string(coverage.run_id);
+    if (query->ColumnText(7) != "u8-rowmajor-nw") throw BadInputError(where + ": unknown encoding");
     if (blob.size() != static_cast<std::size_t>(coverage.width) * coverage.height) {
       throw BadInputError(where + ": mask size does not match width x height");
     }
@@ -130,41 +128,43 @@ std::vector<CoverageRecord> SiteDatabase::Coverages() {
 
 void SiteDatabase::ReplaceHotspots(const HotspotFilter& filter,
                                    const std::vector<HotspotRecord>& hotspots) {
-  SqliteStatement remove = database_.Prepare(
+  const auto remove = connection_->Prepare(
       "DELETE FROM hotspots WHERE filter_class = ? AND filter_from_utc = ? AND filter_to_utc = ?");
-  remove.Bind(1, filter.class_name);
-  remove.Bind(2, filter.from_utc);
-  remove.Bind(3, filter.to_utc);
-  remove.Run();
-  SqliteStatement insert = database_.Prepare(
+  remove->Bind(1, filter.class_name);
+  remove->Bind(2, filter.from_utc);
+  remove->Bind(3, filter.to_utc);
+  remove->Run();
+  const auto insert = connection_->Prepare(
       "INSERT INTO hotspots (geom, rank, site_x_m, site_y_m, density_per_100m2, dominant_class, "
-      "filter_class, filter_from_utc, filter_to_utc) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
+      "filter_class, filter_from_utc, filter_to_utc) VALUES (" +
+      GeometryParameter(1) + ", ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9)");
   for (const HotspotRecord& hotspot : hotspots) {
     const PointXY crs = site_.frame.ToCrs(hotspot.site_xy);
-    const std::vector<std::uint8_t> blob = EncodePoint(crs, site_.frame.srs_id);
-    insert.BindBlob(1, blob);
-    insert.Bind(2, std::int64_t{hotspot.rank});
-    insert.BindReal(3, hotspot.site_xy.x);
-    insert.BindReal(4, hotspot.site_xy.y);
-    insert.BindReal(5, hotspot.density_per_100m2);
+    const std::vector<std::uint8_t> blob = GeometryBytes(WkbType::kPoint, std::span(&crs, 1));
+    insert->BindBlob(1, blob);
+    insert->Bind(2, std::int64_t{hotspot.rank});
+    insert->BindReal(3, hotspot.site_xy.x);
+    insert->BindReal(4, hotspot.site_xy.y);
+    insert->BindReal(5, hotspot.density_per_100m2);
     if (hotspot.dominant_class.empty()) {
-      insert.BindNull(6);
+      insert->BindNull(6);
     } else {
-      insert.Bind(6, hotspot.dominant_class);
+      insert->Bind(6, hotspot.dominant_class);
     }
-    insert.Bind(7, filter.class_name);
-    insert.Bind(8, filter.from_utc);
-    insert.Bind(9, filter.to_utc);
-    insert.Run();
+    insert->Bind(7, filter.class_name);
+    insert->Bind(8, filter.from_utc);
+    insert->Bind(9, filter.to_utc);
+    insert->Run();
   }
   // The layer's extent: of every set it holds now.
-  database_.Execute(
+  if (engine() != SqlEngine::kSqlite) return;
+  connection_->Execute(
       "UPDATE gpkg_contents SET min_x = NULL, min_y = NULL, max_x = NULL, max_y = NULL "
       "WHERE table_name = 'hotspots'");
-  SqliteStatement rows = database_.Prepare("SELECT site_x_m, site_y_m FROM hotspots");
-  while (rows.Step()) {
-    const PointXY crs = site_.frame.ToCrs({rows.ColumnDouble(0), rows.ColumnDouble(1)});
-    ExtendContentsBounds(database_, "hotspots", {crs.x, crs.x, crs.y, crs.y});
+  const auto rows = connection_->Prepare("SELECT site_x_m, site_y_m FROM hotspots");
+  while (rows->Step()) {
+    const PointXY crs = site_.frame.ToCrs({rows->ColumnDouble(0), rows->ColumnDouble(1)});
+    ExtendLayerExtent("hotspots", {crs.x, crs.x, crs.y, crs.y});
   }
 }
 

@@ -5,8 +5,11 @@
 #include "core/error.hpp"
 #include "core/utf8.hpp"
 #include "db/geopackage_schema.hpp"
+#include "db/postgres_connection.hpp"
 #include "db/site_migrations.hpp"
+#include "db/site_schema.hpp"
 #include "db/spatial_ref_sys.hpp"
+#include "db/sqlite_connection.hpp"
 
 namespace littermap::db {
 namespace {
@@ -17,30 +20,27 @@ const FeatureTable kFeatureTables[] = {
     {"run_tracks", "geom", "LINESTRING", 0, "the path of each survey run"},
 };
 
-void InsertSite(SqliteDatabase& database, const SiteOptions& options, std::int32_t srs_id) {
-  SqliteStatement insert = database.Prepare(
+void InsertSite(SqlConnection& database, const SiteOptions& options, std::int32_t srs_id) {
+  const auto insert = database.Prepare(
       "INSERT INTO sites (site_id, name, srs_id, epsg_code, origin_easting_m, "
       "origin_northing_m, rotation_deg) VALUES (1, ?, ?, ?, ?, ?, ?)");
-  insert.Bind(1, options.name);
-  insert.Bind(2, std::int64_t{srs_id});
-  insert.Bind(3, std::int64_t{options.epsg_code.value_or(0)});
-  insert.BindReal(4, options.origin_easting_m);
-  insert.BindReal(5, options.origin_northing_m);
-  insert.BindReal(6, options.rotation_deg);
-  insert.Run();
+  insert->Bind(1, options.name);
+  insert->Bind(2, std::int64_t{srs_id});
+  insert->Bind(3, std::int64_t{options.epsg_code.value_or(0)});
+  insert->BindReal(4, options.origin_easting_m);
+  insert->BindReal(5, options.origin_northing_m);
+  insert->BindReal(6, options.rotation_deg);
+  insert->Run();
 }
 
-void ValidateOptions(const std::filesystem::path& file, const SiteOptions& options) {
+void ValidateOptions(const std::string& where, const SiteOptions& options) {
   if (options.name.empty()) throw UsageError("site init: --name must not be empty");
-  if (std::filesystem::exists(file)) {
-    throw UsageError(file.string() + ": already exists; a site database is created only once");
-  }
   if (!options.epsg_code && (options.origin_easting_m != 0.0 || options.origin_northing_m != 0.0 ||
                              options.rotation_deg != 0.0)) {
     throw UsageError("site init: --origin and --rotation place the site in a CRS; give --crs too");
   }
   RequireUtf8(options.name, "site init: --name");
-  RequireUtf8(file.string(), "site init: SITE");
+  RequireUtf8(where, "site init: SITE");
   if (!std::isfinite(options.rotation_deg) || std::abs(options.rotation_deg) > 360.0) {
     throw UsageError("site init: --rotation must be a number of degrees from -360 to 360");
   }
@@ -51,30 +51,54 @@ void ValidateOptions(const std::filesystem::path& file, const SiteOptions& optio
 
 }  // namespace
 
-SiteDatabase::SiteDatabase(const std::filesystem::path& file, SqliteDatabase::Mode mode)
-    : database_(file, mode) {}
+SiteDatabase::SiteDatabase(std::unique_ptr<SqlConnection> connection)
+    : connection_(std::move(connection)) {}
+SiteDatabase::SiteDatabase(SiteDatabase&&) noexcept = default;
+SiteDatabase::~SiteDatabase() = default;
 
-void SiteDatabase::Configure() {
-  database_.Execute("PRAGMA foreign_keys = ON");
-  database_.Execute("PRAGMA journal_mode = WAL");
+SqliteDatabase& SiteDatabase::sqlite() {
+  auto* sqlite = dynamic_cast<SqliteConnection*>(connection_.get());
+  if (sqlite == nullptr) throw InternalError(name() + ": not a GeoPackage site");
+  return sqlite->database();
 }
 
-SiteDatabase SiteDatabase::Create(const std::filesystem::path& file, const SiteOptions& options) {
-  ValidateOptions(file, options);
+void SiteDatabase::RollbackQuietly() noexcept {
+  try {
+    connection_->Rollback();
+  } catch (...) {  // NOLINT(bugprone-empty-catch): the body's exception is the one to report;
+  }                // a connection that cannot roll back has lost the transaction already
+}
+
+void SiteDatabase::ConfigureGeoPackage() {
+  connection_->Execute("PRAGMA foreign_keys = ON");
+  connection_->Execute("PRAGMA journal_mode = WAL");
+}
+
+SiteDatabase SiteDatabase::Create(const SiteLocator& where, const SiteOptions& options) {
+  ValidateOptions(where.display, options);
+  return where.postgres() ? CreatePostgres(where, options) : CreateGeoPackage(where.file, options);
+}
+
+SiteDatabase SiteDatabase::CreateGeoPackage(const std::filesystem::path& file,
+                                            const SiteOptions& options) {
+  if (std::filesystem::exists(file)) {
+    throw UsageError(file.string() + ": already exists; a site database is created only once");
+  }
   const SpatialRefSys srs =
       options.epsg_code ? EpsgSpatialRefSys(*options.epsg_code) : LocalSpatialRefSys(options.name);
   try {
-    SiteDatabase site(file, SqliteDatabase::Mode::kCreate);
-    site.Configure();
+    SiteDatabase site(std::make_unique<SqliteConnection>(file, SqliteDatabase::Mode::kCreate));
+    SqliteDatabase& database = site.sqlite();
+    site.ConfigureGeoPackage();
     site.InTransaction([&] {
-      CreateGeoPackageCore(site.database_);
-      AddSpatialRefSys(site.database_, srs);
-      MigrateSiteSchema(site.database_);
+      CreateGeoPackageCore(database);
+      AddSpatialRefSys(database, srs);
+      MigrateSiteSchema(database);
       for (FeatureTable table : kFeatureTables) {
         table.srs_id = srs.srs_id;
-        RegisterFeatureTable(site.database_, table);
+        RegisterFeatureTable(database, table);
       }
-      InsertSite(site.database_, options, srs.srs_id);
+      InsertSite(site.sql(), options, srs.srs_id);
     });
     site.LoadSite();
     return site;
@@ -87,22 +111,97 @@ SiteDatabase SiteDatabase::Create(const std::filesystem::path& file, const SiteO
   }
 }
 
-SiteDatabase SiteDatabase::Open(const std::filesystem::path& file) { return OpenFile(file, false); }
-
-SiteDatabase SiteDatabase::OpenReadOnly(const std::filesystem::path& file) {
-  return OpenFile(file, true);
+SiteDatabase SiteDatabase::CreatePostgres(const SiteLocator& where, const SiteOptions& options) {
+  if (options.epsg_code) EpsgSpatialRefSys(*options.epsg_code);  // throws for an unusable CRS
+  auto connection =
+      std::make_unique<PostgresConnection>(where.conninfo, where.schema, where.display);
+  PostgresConnection& postgres = *connection;
+  SiteDatabase site(std::move(connection));
+  // PostGIS lives in public, as Debian's packages and QGIS expect; the site in its own schema.
+  try {
+    postgres.Execute("CREATE EXTENSION IF NOT EXISTS postgis SCHEMA public");
+  } catch (const PostgresError& e) {
+    throw EnvironmentError(where.display +
+                           ": PostGIS is not installed in this database and "
+                           "this login may not install it (" +
+                           e.what() + ")");
+  }
+  site.InTransaction([&] {
+    if (postgres.HasTable("sites")) {
+      throw UsageError(where.display + ": already exists; a site database is created only once");
+    }
+    postgres.Execute("CREATE SCHEMA IF NOT EXISTS " + postgres.QuotedSchema());
+    postgres.Execute(PostgresSiteSchemaSql(options.epsg_code.value_or(0)));
+    const auto record = postgres.Prepare(
+        "INSERT INTO littermap_schema_version (version, description) VALUES (?, ?)");
+    record->Bind(1, std::int64_t{LatestSiteSchemaVersion()});
+    record->Bind(2, "created at this version");
+    record->Run();
+    InsertSite(postgres, options, options.epsg_code.value_or(0));
+  });
+  site.LoadSite();
+  return site;
 }
 
-SiteDatabase SiteDatabase::OpenFile(const std::filesystem::path& file, bool read_only) {
+bool SiteDatabase::Exists(const SiteLocator& where) {
+  if (!where.postgres()) return std::filesystem::exists(where.file);
+  return PostgresConnection(where.conninfo, where.schema, where.display).HasTable("sites");
+}
+
+SiteDatabase SiteDatabase::Open(const SiteLocator& where) {
+  return where.postgres() ? OpenPostgres(where, false) : OpenGeoPackage(where.file, false);
+}
+
+SiteDatabase SiteDatabase::OpenReadOnly(const SiteLocator& where) {
+  return where.postgres() ? OpenPostgres(where, true) : OpenGeoPackage(where.file, true);
+}
+
+namespace {
+
+// The site's schema version against this build's, for a site that may not be migrated here.
+void RequireLatestVersion(const std::string& name, int version, const char* how_to_upgrade) {
+  if (version == LatestSiteSchemaVersion()) return;
+  throw BadInputError(
+      name + ": site schema version " + std::to_string(version) +
+      ", this littermap reads version " + std::to_string(LatestSiteSchemaVersion()) +
+      (version < LatestSiteSchemaVersion() ? how_to_upgrade
+                                           : "; it was written by a newer littermap"));
+}
+
+int PostgresSchemaVersion(SqlConnection& connection) {
+  const auto query = connection.Prepare("SELECT max(version) FROM littermap_schema_version");
+  return query->Step() && !query->ColumnIsNull(0) ? static_cast<int>(query->ColumnInt64(0)) : 0;
+}
+
+}  // namespace
+
+SiteDatabase SiteDatabase::OpenGeoPackage(const std::filesystem::path& file, bool read_only) {
   if (!std::filesystem::is_regular_file(file)) {
     throw BadInputError(file.string() +
                         ": no such site database (create one with 'littermap "
                         "site init')");
   }
-  SiteDatabase site(file,
-                    read_only ? SqliteDatabase::Mode::kReadOnly : SqliteDatabase::Mode::kReadWrite);
+  SiteDatabase site(std::make_unique<SqliteConnection>(
+      file, read_only ? SqliteDatabase::Mode::kReadOnly : SqliteDatabase::Mode::kReadWrite));
+  SqliteDatabase& database = site.sqlite();
   try {
-    OpenChecked(site, read_only);
+    CheckIsGeoPackage(database);
+    if (SiteSchemaVersion(database) == 0 || !database.HasTable("sites")) {
+      throw BadInputError(file.string() +
+                          ": a GeoPackage but not a littermap site database (no "
+                          "littermap_schema_version table); create one with 'littermap site "
+                          "init'");
+    }
+    if (read_only) {
+      database.Execute("PRAGMA foreign_keys = ON");
+      RequireLatestVersion(file.string(), SiteSchemaVersion(database),
+                           "; a command that writes the site (ingest, heatmap) upgrades it");
+    } else {
+      site.ConfigureGeoPackage();
+      site.InTransaction([&] { MigrateSiteSchema(database); });
+    }
+    CheckSiteSchema(site.sql());
+    site.LoadSite();
   } catch (const SqliteError& e) {
     // The statements that open a site are those of every site littermap writes: one that fails
     // here found a damaged file, not a bug.
@@ -113,46 +212,64 @@ SiteDatabase SiteDatabase::OpenFile(const std::filesystem::path& file, bool read
   return site;
 }
 
-void SiteDatabase::OpenChecked(SiteDatabase& site, bool read_only) {
-  const std::filesystem::path& file = site.database_.file();
-  CheckIsGeoPackage(site.database_);
-  if (SiteSchemaVersion(site.database_) == 0 || !site.database_.HasTable("sites")) {
-    throw BadInputError(file.string() +
-                        ": a GeoPackage but not a littermap site database (no "
-                        "littermap_schema_version table); create one with 'littermap site init'");
+SiteDatabase SiteDatabase::OpenPostgres(const SiteLocator& where, bool read_only) {
+  SiteDatabase site(
+      std::make_unique<PostgresConnection>(where.conninfo, where.schema, where.display));
+  SqlConnection& connection = site.sql();
+  if (!connection.HasTable("sites") || !connection.HasTable("littermap_schema_version")) {
+    throw BadInputError(where.display + ": no such site (create it with 'littermap site init')");
   }
-  if (read_only) {
-    site.database_.Execute("PRAGMA foreign_keys = ON");
-    const int version = SiteSchemaVersion(site.database_);
-    if (version != LatestSiteSchemaVersion()) {
-      throw BadInputError(file.string() + ": site schema version " + std::to_string(version) +
-                          ", this littermap reads version " +
-                          std::to_string(LatestSiteSchemaVersion()) +
-                          (version < LatestSiteSchemaVersion()
-                               ? "; a command that writes the site (ingest, heatmap) upgrades it"
-                               : "; it was written by a newer littermap"));
-    }
-  } else {
-    site.Configure();
-    site.InTransaction([&] { MigrateSiteSchema(site.database_); });
-  }
-  CheckSiteSchema(site.database_);
+  if (read_only) connection.Execute("SET default_transaction_read_only = on");
+  // Sites in PostgreSQL start at the latest schema; a later one brings its own migrations.
+  RequireLatestVersion(where.display, PostgresSchemaVersion(connection),
+                       "; this littermap has no migration for a PostGIS site of that version");
+  CheckSiteSchema(connection);
   site.LoadSite();
+  return site;
 }
 
 void SiteDatabase::LoadSite() {
-  SqliteStatement query = database_.Prepare(
+  const auto query = connection_->Prepare(
       "SELECT name, srs_id, epsg_code, origin_easting_m, origin_northing_m, rotation_deg, "
       "created_utc FROM sites WHERE site_id = 1");
-  if (!query.Step()) throw BadInputError(database_.file().string() + ": table sites is empty");
-  site_.name = query.ColumnText(0);
-  site_.frame.srs_id = static_cast<std::int32_t>(query.ColumnInt64(1));
-  site_.frame.epsg_code = static_cast<std::int32_t>(query.ColumnInt64(2));
-  site_.frame.origin_easting_m = query.ColumnDouble(3);
-  site_.frame.origin_northing_m = query.ColumnDouble(4);
-  site_.frame.rotation_deg = query.ColumnDouble(5);
-  site_.created_utc = query.ColumnText(6);
-  site_.schema_version = SiteSchemaVersion(database_);
+  if (!query->Step()) throw BadInputError(name() + ": table sites is empty");
+  site_.name = query->ColumnText(0);
+  site_.frame.srs_id = static_cast<std::int32_t>(query->ColumnInt64(1));
+  site_.frame.epsg_code = static_cast<std::int32_t>(query->ColumnInt64(2));
+  site_.frame.origin_easting_m = query->ColumnDouble(3);
+  site_.frame.origin_northing_m = query->ColumnDouble(4);
+  site_.frame.rotation_deg = query->ColumnDouble(5);
+  site_.created_utc = query->ColumnText(6);
+  site_.schema_version = engine() == SqlEngine::kSqlite ? SiteSchemaVersion(sqlite())
+                                                        : PostgresSchemaVersion(*connection_);
+}
+
+std::string SiteDatabase::GeometryParameter(int index) const {
+  const std::string parameter = "?" + std::to_string(index);
+  if (engine() == SqlEngine::kSqlite) return parameter;
+  return "ST_GeomFromWKB(" + parameter + ", " + std::to_string(site_.frame.epsg_code) + ")";
+}
+
+std::string SiteDatabase::GeometryColumn(const char* column) const {
+  if (engine() == SqlEngine::kSqlite) return column;
+  return std::string("ST_AsBinary(") + column + ")";
+}
+
+std::vector<std::uint8_t> SiteDatabase::GeometryBytes(WkbType type,
+                                                      std::span<const PointXY> crs_points) const {
+  if (engine() == SqlEngine::kPostgres) return EncodeWkb(type, crs_points);
+  if (type == WkbType::kPoint) return EncodePoint(crs_points.front(), site_.frame.srs_id);
+  return EncodeLineString(crs_points, site_.frame.srs_id);
+}
+
+GeometryBlob SiteDatabase::ReadGeometry(std::span<const std::uint8_t> bytes,
+                                        const std::string& where) const {
+  return engine() == SqlEngine::kSqlite ? DecodeGeometry(bytes, where) : DecodeWkb(bytes, where);
+}
+
+void SiteDatabase::ExtendLayerExtent(const std::string& table, const Envelope& crs_envelope) {
+  // PostGIS layers have no stored extent: QGIS asks the spatial index.
+  if (engine() == SqlEngine::kSqlite) ExtendContentsBounds(sqlite(), table, crs_envelope);
 }
 
 }  // namespace littermap::db

@@ -1,12 +1,18 @@
 #pragma once
-// One site's database: an SQLite file that is also an OGC GeoPackage 1.4 (QGIS opens it as it
-// is). Feature tables litter_items, hotspots (POINT) and run_tracks (LINESTRING) hold geometry
-// in the site CRS; the tables sites, runs, detections and coverage are littermap's own.
-// Connections run with foreign keys on, WAL journaling and a busy timeout, so two processes
-// may write one site (one waits for the other's transaction).
+// One site's database, in either of two engines (site_locator.hpp):
+// - an SQLite file that is also an OGC GeoPackage 1.3 (QGIS opens it as it is), with foreign
+//   keys on, WAL journaling and a busy timeout, so two processes may write one site (one waits
+//   for the other's transaction);
+// - a schema of a PostgreSQL database with PostGIS, for many robots and machines writing one
+//   city's parks: writers of a site queue on its advisory lock; QGIS and GDAL read the layers.
+// Feature tables litter_items, hotspots (POINT) and run_tracks (LINESTRING) hold geometry in the
+// site CRS (a PostGIS site in a local frame has SRID 0); the tables sites, runs, detections,
+// coverage and site_map are littermap's own. Both engines have the same tables and columns
+// (site_schema.hpp) and run the same statements.
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -17,6 +23,8 @@
 #include "core/sqlite_database.hpp"
 #include "db/geometry_blob.hpp"
 #include "db/site_frame.hpp"
+#include "db/site_locator.hpp"
+#include "db/sql_connection.hpp"
 
 namespace littermap::db {
 
@@ -117,30 +125,44 @@ struct RunTrack {
 
 class SiteDatabase {
  public:
-  // Throws UsageError when the file exists or the CRS is unusable; leaves no file behind.
-  static SiteDatabase Create(const std::filesystem::path& file, const SiteOptions& options);
-  // Throws BadInputError naming the file when it is not a littermap site GeoPackage; applies
-  // pending schema migrations.
-  static SiteDatabase Open(const std::filesystem::path& file);
-  // For the commands that only read (report): opens the file read-only, so a site one may only
-  // read (a share, a copy with mode 0444) is enough. A site that needs a schema migration is a
-  // BadInputError saying that a writing command upgrades it.
-  static SiteDatabase OpenReadOnly(const std::filesystem::path& file);
+  // Throws UsageError when the site exists or the CRS is unusable; leaves nothing behind (no
+  // file; no schema).
+  static SiteDatabase Create(const SiteLocator& where, const SiteOptions& options);
+  // Throws BadInputError naming the site when it is not a littermap site; applies pending
+  // schema migrations.
+  static SiteDatabase Open(const SiteLocator& where);
+  // For the commands that only read (report): a GeoPackage is opened read-only, so a site one
+  // may only read (a share, a copy with mode 0444) is enough. A site that needs a schema
+  // migration is a BadInputError saying that a writing command upgrades it.
+  static SiteDatabase OpenReadOnly(const SiteLocator& where);
+  // Whether something is there to open: the file, or the schema's sites table. Throws
+  // PostgresError when the server cannot be reached.
+  static bool Exists(const SiteLocator& where);
+
+  SiteDatabase(SiteDatabase&&) noexcept;
+  SiteDatabase& operator=(SiteDatabase&&) = delete;
+  ~SiteDatabase();
 
   const SiteInfo& site() const { return site_; }
-  SqliteDatabase& sql() { return database_; }
+  SqlEngine engine() const { return connection_->engine(); }
+  // For messages: the file, or the database and site.
+  const std::string& name() const { return connection_->name(); }
+  SqlConnection& sql() { return *connection_; }
+  // The GeoPackage's SQLite database; throws InternalError for a PostGIS site.
+  SqliteDatabase& sqlite();
 
-  // BEGIN IMMEDIATE ... COMMIT; rolls back when `body` throws.
+  // One writer at a time (SQLite's BEGIN IMMEDIATE; the site's advisory lock in PostgreSQL);
+  // commits, or rolls back when `body` throws.
   template <typename Body>
   void InTransaction(Body&& body) {
-    database_.Execute("BEGIN IMMEDIATE");
+    connection_->BeginWrite();
     try {
       body();
     } catch (...) {
-      database_.Execute("ROLLBACK");
+      RollbackQuietly();
       throw;
     }
-    database_.Execute("COMMIT");
+    connection_->Commit();
   }
 
   std::optional<std::int64_t> FindRun(const std::string& source_digest);
@@ -168,14 +190,25 @@ class SiteDatabase {
   void ReplaceHotspots(const HotspotFilter& filter, const std::vector<HotspotRecord>& hotspots);
 
  private:
-  explicit SiteDatabase(const std::filesystem::path& file, SqliteDatabase::Mode mode);
-  void Configure();
+  explicit SiteDatabase(std::unique_ptr<SqlConnection> connection);
+  static SiteDatabase CreateGeoPackage(const std::filesystem::path& file,
+                                       const SiteOptions& options);
+  static SiteDatabase CreatePostgres(const SiteLocator& where, const SiteOptions& options);
+  static SiteDatabase OpenGeoPackage(const std::filesystem::path& file, bool read_only);
+  static SiteDatabase OpenPostgres(const SiteLocator& where, bool read_only);
+  void ConfigureGeoPackage();
   void LoadSite();
-  // The checks and (unless read_only) migrations of Open, on an opened file.
-  static void OpenChecked(SiteDatabase& site, bool read_only);
-  static SiteDatabase OpenFile(const std::filesystem::path& file, bool read_only);
+  void RollbackQuietly() noexcept;
 
-  SqliteDatabase database_;
+  // Where the engines differ: how a geometry parameter is written and a geometry column read
+  // (a GeoPackage blob; WKB through PostGIS), and the GeoPackage's layer extents.
+  std::string GeometryParameter(int index) const;
+  std::string GeometryColumn(const char* column) const;
+  std::vector<std::uint8_t> GeometryBytes(WkbType type, std::span<const PointXY> crs_points) const;
+  GeometryBlob ReadGeometry(std::span<const std::uint8_t> bytes, const std::string& where) const;
+  void ExtendLayerExtent(const std::string& table, const Envelope& crs_envelope);
+
+  std::unique_ptr<SqlConnection> connection_;
   SiteInfo site_;
 };
 

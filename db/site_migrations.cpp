@@ -191,26 +191,4 @@ MigrationResult MigrateSiteSchema(SqliteDatabase& database) {
   return result;
 }
 
-void CheckSiteSchema(SqliteDatabase& database) {
-  SqliteDatabase reference(":memory:", SqliteDatabase::Mode::kCreate);
-  MigrateSiteSchema(reference);
-  SqliteStatement tables =
-      reference.Prepare("SELECT name FROM sqlite_master WHERE type = 'table' ORDER BY name");
-  while (tables.Step()) {
-    const std::string table = tables.ColumnText(0);
-    const std::string refused = database.file().string() +
-                                ": not a complete littermap site database (damaged, or written by "
-                                "another program): ";
-    if (!database.HasTable(table)) throw BadInputError(refused + "no table " + table);
-    SqliteStatement columns = reference.Prepare("SELECT name FROM pragma_table_info(?)");
-    columns.Bind(1, table);
-    while (columns.Step()) {
-      const std::string column = columns.ColumnText(0);
-      if (!database.HasColumn(table, column)) {
-        throw BadInputError(refused + "no column " + table + "." + column);
-      }
-    }
-  }
-}
-
 }  // namespace littermap::db

@@ -1,7 +1,8 @@
 #pragma once
-// littermap's own schema inside the GeoPackage, versioned in littermap_schema_version (the
-// GeoPackage owns PRAGMA user_version). Each migration is applied once, in order, in the
-// caller's transaction; a file from a newer littermap is refused rather than guessed at.
+// littermap's own schema inside the GeoPackage (site_schema.hpp says where it ends up), versioned
+// in littermap_schema_version (the GeoPackage owns PRAGMA user_version). Each migration is applied
+// once, in order, in the caller's transaction; a file from a newer littermap is refused rather than
+// guessed at.
 
 #include "core/sqlite_database.hpp"
 
@@ -20,10 +21,5 @@ int SiteSchemaVersion(SqliteDatabase& database);
 
 // Throws BadInputError naming the file when its schema is newer than this build knows.
 MigrationResult MigrateSiteSchema(SqliteDatabase& database);
-
-// Throws BadInputError naming the first table or column of the current schema (the migrations
-// above, applied to an empty database) that `database` lacks: a damaged site, or one another
-// program wrote, is refused when opened rather than failing in a query later.
-void CheckSiteSchema(SqliteDatabase& database);
 
 }  // namespace littermap::db

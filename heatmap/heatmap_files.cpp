@@ -81,7 +81,7 @@ HeatmapFilesResult WriteHeatmapFiles(db::SiteDatabase& site, const std::filesyst
   if (wgs84) {
     WriteItemsGeoJson(dir / "items.geojson", map.items, frame, *wgs84);
   } else {
-    result.warnings.push_back(site.sql().file().string() +
+    result.warnings.push_back(site.name() +
                               ": the site is not georeferenced (no --crs at 'site init'), so "
                               "there is no items.geojson (GeoJSON is WGS 84 only)");
   }
@@ -94,7 +94,7 @@ HeatmapFilesResult WriteHeatmapFiles(db::SiteDatabase& site, const std::filesyst
   return result;
 }
 
-HeatmapFilesResult WriteHeatmapFiles(const std::filesystem::path& site_file,
+HeatmapFilesResult WriteHeatmapFiles(const db::SiteLocator& site_file,
                                      const std::filesystem::path& dir,
                                      HeatmapFilesOptions options) {
   db::SiteDatabase site = db::SiteDatabase::Open(site_file);

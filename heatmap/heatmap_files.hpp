@@ -43,8 +43,9 @@ struct HeatmapFilesResult {
 // Creates `dir` if needed. Throws BadInputError when no run matches the selection.
 HeatmapFilesResult WriteHeatmapFiles(db::SiteDatabase& site, const std::filesystem::path& dir,
                                      HeatmapFilesOptions options);
-// The same for the site database in `site_file`; throws BadInputError when it is not one.
-HeatmapFilesResult WriteHeatmapFiles(const std::filesystem::path& site_file,
+// The same for the site `site_file` (a GeoPackage or a PostGIS site); throws BadInputError when it
+// is not one.
+HeatmapFilesResult WriteHeatmapFiles(const db::SiteLocator& site_file,
                                      const std::filesystem::path& dir, HeatmapFilesOptions options);
 
 // What was written, in one line: runs, items, area, peak density, hotspots and `dir`.

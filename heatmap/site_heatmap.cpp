@@ -54,7 +54,7 @@ SiteHeatmap ComputeSiteHeatmap(db::SiteDatabase& site, const SiteHeatmapOptions&
   std::vector<db::CoverageRecord> coverages = site.Coverages();
   std::erase_if(coverages, [&](const auto& c) { return !selected.count(c.run_id); });
   if (coverages.empty()) {
-    throw BadInputError(site.sql().file().string() +
+    throw BadInputError(site.name() +
                         ": no ingested run matches the selection (ingest runs first)");
   }
   SiteHeatmap heatmap;

@@ -29,8 +29,8 @@ SiteReport WriteReportFiles(db::SiteDatabase& site, const std::filesystem::path&
   return report;
 }
 
-SiteReport WriteReportFiles(const std::filesystem::path& site_file,
-                            const std::filesystem::path& dir, const ReportFilesOptions& options) {
+SiteReport WriteReportFiles(const db::SiteLocator& site_file, const std::filesystem::path& dir,
+                            const ReportFilesOptions& options) {
   db::SiteDatabase site = db::SiteDatabase::OpenReadOnly(site_file);
   return WriteReportFiles(site, dir, options);
 }

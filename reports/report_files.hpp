@@ -25,9 +25,10 @@ ReportFilesOptions StampedReportFilesOptions();
 // in the period, UsageError when the files cannot be written.
 SiteReport WriteReportFiles(db::SiteDatabase& site, const std::filesystem::path& dir,
                             const ReportFilesOptions& options);
-// The same for the site database in `site_file`; throws BadInputError when it is not one.
-SiteReport WriteReportFiles(const std::filesystem::path& site_file,
-                            const std::filesystem::path& dir, const ReportFilesOptions& options);
+// The same for the site `site_file` (a GeoPackage or a PostGIS site); throws BadInputError when it
+// is not one.
+SiteReport WriteReportFiles(const db::SiteLocator& site_file, const std::filesystem::path& dir,
+                            const ReportFilesOptions& options);
 
 // What was written: the site, its runs, items and hotspots, and DIR/index.html on a line of its
 // own.

@@ -56,15 +56,15 @@ heatmap::HeatmapFilesOptions HeatmapOptions(const Survey& survey) {
 
 // Before any long stage: a bad site fails fast.
 void OpenOrCreateSite(const Survey& survey) {
-  const fs::path& file = survey.options.site;
-  if (fs::exists(file)) {
-    db::SiteDatabase::Open(file);
+  const db::SiteLocator& where = survey.options.site;
+  if (db::SiteDatabase::Exists(where)) {
+    db::SiteDatabase::Open(where);
     return;
   }
   db::SiteOptions site;
-  site.name = file.stem().string();
-  db::SiteDatabase::Create(file, site);
-  survey.Print("Created site '" + site.name + "' in " + file.string() +
+  site.name = where.postgres() ? where.schema : where.file.stem().string();
+  db::SiteDatabase::Create(where, site);
+  survey.Print("Created site '" + site.name + "' in " + where.display +
                ": local frame, positions in metres from the dock (for GPS coordinates create "
                "the site first with 'littermap site init --crs')");
 }
@@ -94,7 +94,7 @@ std::vector<Stage> Stages(Survey& survey) {
     const site::RunDirectoryIngestResult result =
         site::IngestRunDirectory(survey.options.site, survey.run_dir, run);
     survey.Warn(result.warnings);
-    survey.Print(site::IngestSummary(result, survey.options.site));
+    survey.Print(site::IngestSummary(result, survey.options.site.display));
   };
   const auto heatmap = [&survey](const ProgressCallback&) {
     const heatmap::HeatmapFilesResult result =

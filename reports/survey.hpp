@@ -18,6 +18,7 @@
 #include <string>
 
 #include "core/progress.hpp"
+#include "db/site_locator.hpp"
 #include "reports/site_report.hpp"
 #include "run/detect_run.hpp"
 #include "run/reconstruct_run.hpp"
@@ -26,7 +27,7 @@ namespace littermap::reports {
 
 struct SurveyOptions {
   std::filesystem::path bag;
-  std::filesystem::path site;        // created when missing
+  db::SiteLocator site;              // created when missing
   std::filesystem::path output_dir;  // empty: NAME-survey in the current directory
   std::string name;                  // of the run in the site; empty: the bag directory's name
   run::ReconstructRunOptions reconstruct;

@@ -11,6 +11,7 @@ packages=(
   libgtest-dev libbenchmark-dev libceres-dev libnanoflann-dev ccache
   libproj-dev libtiff-dev libgeotiff-dev libpcl-dev libopenni2-dev
   python3 chromium nodejs gdal-bin poppler-utils
+  libpq-dev postgresql-15 postgresql-15-postgis-3
 )
 # The interop tests read and write bags with pinned npm packages (tests/interop). Debian's
 # nodejs comes without npm; NodeSource's includes it.

@@ -53,7 +53,7 @@ std::string ReadQuality(const std::filesystem::path& file) {
 void CheckNameFree(db::SiteDatabase& site, const std::string& name, const std::string& digest) {
   for (const db::RunRecord& run : site.Runs()) {
     if (run.name == name && run.source_digest != digest) {
-      throw BadInputError(site.sql().file().string() + ": already holds a run named '" + name +
+      throw BadInputError(site.name() + ": already holds a run named '" + name +
                           "' with other results (run " + std::to_string(run.run_id) +
                           "); the site keeps it. To add these results as another run, give "
                           "--name");
@@ -124,20 +124,19 @@ RunDirectoryIngestResult IngestRunDirectory(db::SiteDatabase& site,
   return result;
 }
 
-RunDirectoryIngestResult IngestRunDirectory(const std::filesystem::path& site_file,
+RunDirectoryIngestResult IngestRunDirectory(const db::SiteLocator& site_file,
                                             const std::filesystem::path& run_dir,
                                             RunDirectoryIngestOptions options) {
   db::SiteDatabase site = db::SiteDatabase::Open(site_file);
   return IngestRunDirectory(site, run_dir, std::move(options));
 }
 
-std::string IngestSummary(const RunDirectoryIngestResult& result,
-                          const std::filesystem::path& site_file) {
+std::string IngestSummary(const RunDirectoryIngestResult& result, const std::string& site_name) {
   std::string text;
   for (const std::string& note : result.notes) text += note + "\n";
   const IngestResult& run = result.ingest;
   if (run.already_ingested) {
-    return text + "Run " + result.name + " is already in " + site_file.string() + " as run " +
+    return text + "Run " + result.name + " is already in " + site_name + " as run " +
            std::to_string(run.run_id) + "; nothing changed";
   }
   const auto s = [](std::size_t n) { return n == 1 ? "" : "s"; };

@@ -36,13 +36,13 @@ struct RunDirectoryIngestResult {
 RunDirectoryIngestResult IngestRunDirectory(db::SiteDatabase& site,
                                             const std::filesystem::path& run_dir,
                                             RunDirectoryIngestOptions options);
-// The same for the site database in `site_file`; throws BadInputError when it is not one.
-RunDirectoryIngestResult IngestRunDirectory(const std::filesystem::path& site_file,
+// The same for the site `site_file` (a GeoPackage or a PostGIS site); throws BadInputError when it
+// is not one.
+RunDirectoryIngestResult IngestRunDirectory(const db::SiteLocator& site_file,
                                             const std::filesystem::path& run_dir,
                                             RunDirectoryIngestOptions options);
 
 // What placing and adding the run did, a line each (the notes, then the counts of the run).
-std::string IngestSummary(const RunDirectoryIngestResult& result,
-                          const std::filesystem::path& site_file);
+std::string IngestSummary(const RunDirectoryIngestResult& result, const std::string& site_name);
 
 }  // namespace littermap::site

@@ -176,8 +176,7 @@ IngestResult IngestRun(db::SiteDatabase& site, const RunInput& run, const Ingest
                                  result.length_m, run.T_site_run, run.registration_quality,
                                  run.reconstruction_quality});
     if (run.site_map && site.SiteMap()) {
-      throw SiteMapDefinedMeanwhile(site.sql().file().string() +
-                                    ": another run defined the site map meanwhile");
+      throw SiteMapDefinedMeanwhile(site.name() + ": another run defined the site map meanwhile");
     }
     if (run.site_map) {
       db::SiteMapRecord map = *run.site_map;

@@ -46,8 +46,8 @@ void PlaceRun(db::SiteDatabase& site, const std::filesystem::path& map_yaml,
                   options.registration.min_matching_ratio, registration.overlap_points,
                   options.registration.min_overlap_points);
     throw BadInputError(
-        map_yaml.string() + ": the run's map does not match the site map of " +
-        site.sql().file().string() + detail +
+        map_yaml.string() + ": the run's map does not match the site map of " + site.name() +
+        detail +
         ". If the run did not start at the dock give --initial X Y DEG near its start, or place "
         "it by hand with --transform X Y DEG");
   }

@@ -40,7 +40,7 @@ std::int64_t Integer(SqliteDatabase& database, const std::string& sql) {
 TEST(SiteDatabase, LocalSiteIsAValidGeoPackage) {
   TempDir dir;
   SiteDatabase site = SiteDatabase::Create(dir / "park.gpkg", Options("North park"));
-  SqliteDatabase& sql = site.sql();
+  SqliteDatabase& sql = site.sqlite();
   EXPECT_EQ(Integer(sql, "PRAGMA application_id"), 0x47504B47);
   EXPECT_EQ(Integer(sql, "PRAGMA user_version"), 10300);  // GeoPackage 1.3
   EXPECT_EQ(Text(sql, "PRAGMA integrity_check"), "ok");
@@ -75,7 +75,7 @@ TEST(SiteDatabase, EpsgSiteCarriesProjDefinition) {
   SiteDatabase site =
       SiteDatabase::Create(dir / "park.gpkg", Options("Madison", 32616, 305000, 4770000, 90));
   const std::string definition =
-      Text(site.sql(), "SELECT definition FROM gpkg_spatial_ref_sys WHERE srs_id = 32616");
+      Text(site.sqlite(), "SELECT definition FROM gpkg_spatial_ref_sys WHERE srs_id = 32616");
   EXPECT_EQ(definition.rfind("PROJCS[\"WGS 84 / UTM zone 16N\"", 0), 0u) << definition;
   EXPECT_EQ(site.site().frame.srs_id, 32616);
   // Rotation 90 deg: the site x axis points north.
@@ -121,7 +121,7 @@ TEST(SiteDatabase, ReopensWithRecordsAndGeometryInTheSiteCrs) {
   ASSERT_EQ(items.size(), 1u);
   EXPECT_EQ(items[0].class_name, "bottle");
   // The stored geometry is in EPSG:32633, not the site frame.
-  SqliteStatement geom = site.sql().Prepare("SELECT geom FROM litter_items");
+  SqliteStatement geom = site.sqlite().Prepare("SELECT geom FROM litter_items");
   ASSERT_TRUE(geom.Step());
   const GeometryBlob blob = DecodeGeometry(geom.ColumnBlob(0), "test");
   const PointXY expected = site.site().frame.ToCrs({3, 4});
@@ -129,12 +129,12 @@ TEST(SiteDatabase, ReopensWithRecordsAndGeometryInTheSiteCrs) {
   EXPECT_NEAR(blob.points[0].x, expected.x, 1e-9);
   EXPECT_NEAR(blob.points[0].y, expected.y, 1e-9);
   EXPECT_NEAR(expected.x, 500000 + 3 * std::cos(M_PI / 6) - 4 * std::sin(M_PI / 6), 1e-9);
-  EXPECT_EQ(Integer(site.sql(),
+  EXPECT_EQ(Integer(site.sqlite(),
                     "SELECT count(*) FROM gpkg_contents WHERE "
                     "table_name = 'litter_items' AND min_x IS NOT NULL"),
             1);
-  EXPECT_EQ(Text(site.sql(), "PRAGMA integrity_check"), "ok");
-  EXPECT_EQ(Text(site.sql(), "PRAGMA foreign_key_check"), "<no row>");
+  EXPECT_EQ(Text(site.sqlite(), "PRAGMA integrity_check"), "ok");
+  EXPECT_EQ(Text(site.sqlite(), "PRAGMA foreign_key_check"), "<no row>");
 }
 
 TEST(SiteDatabase, ASiteMissingATableOrColumnIsRefusedWhenOpened) {
@@ -214,7 +214,7 @@ TEST(SiteDatabase, RefusesASchemaFromTheFuture) {
   const auto file = dir / "park.gpkg";
   {
     SiteDatabase site = SiteDatabase::Create(file, Options("p"));
-    site.sql().Execute(
+    site.sqlite().Execute(
         "INSERT INTO littermap_schema_version (version, description) "
         "VALUES (999, 'future')");
   }
@@ -276,23 +276,23 @@ TEST(SiteDatabase, AVersionOneSiteIsMigratedOnOpen) {
     const PointXY track[] = {{0, 0}, {3, 0}};
     site.AddRunTrack(run_id, track);
     // Back to version 1, as littermap wrote it then (declaring GeoPackage 1.4).
-    site.sql().Execute("DROP TABLE site_map");
-    site.sql().Execute("ALTER TABLE runs DROP COLUMN reconstruction_quality");
+    site.sqlite().Execute("DROP TABLE site_map");
+    site.sqlite().Execute("ALTER TABLE runs DROP COLUMN reconstruction_quality");
     for (const char* column : {"run_name", "start_utc"}) {
-      site.sql().Execute(std::string("ALTER TABLE run_tracks DROP COLUMN ") + column);
+      site.sqlite().Execute(std::string("ALTER TABLE run_tracks DROP COLUMN ") + column);
     }
     for (const char* column : {"filter_class", "filter_from_utc", "filter_to_utc"}) {
-      site.sql().Execute(std::string("ALTER TABLE hotspots DROP COLUMN ") + column);
+      site.sqlite().Execute(std::string("ALTER TABLE hotspots DROP COLUMN ") + column);
     }
-    site.sql().Execute("PRAGMA user_version = 10400");
-    site.sql().Execute("DELETE FROM littermap_schema_version WHERE version > 1");
+    site.sqlite().Execute("PRAGMA user_version = 10400");
+    site.sqlite().Execute("DELETE FROM littermap_schema_version WHERE version > 1");
   }
   SiteDatabase site = SiteDatabase::Open(file);
   EXPECT_EQ(site.site().schema_version, 4);
-  EXPECT_EQ(Integer(site.sql(), "PRAGMA user_version"), 10300);
-  EXPECT_EQ(Text(site.sql(), "SELECT run_name || ' ' || start_utc FROM run_tracks"),
+  EXPECT_EQ(Integer(site.sqlite(), "PRAGMA user_version"), 10300);
+  EXPECT_EQ(Text(site.sqlite(), "SELECT run_name || ' ' || start_utc FROM run_tracks"),
             "week 1 2026-11-18T11:06:40Z");
-  EXPECT_TRUE(site.sql().HasTable("site_map"));
+  EXPECT_TRUE(site.sqlite().HasTable("site_map"));
   EXPECT_FALSE(site.SiteMap());
   RunRecord run{0, "r", "digest", 1, 2, 3, {}, std::nullopt, R"({"key_frames": 5})"};
   site.AddRun(run);

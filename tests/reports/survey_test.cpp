@@ -91,7 +91,7 @@ TEST_F(SurveyTest, SkipsTheStagesUpToDateAndRunsTheOthers) {
   FinishEarlierStages();
   const SurveyResult result = RunSurvey(options_, callbacks_);
   ASSERT_EQ(printed_.size(), 9u);
-  EXPECT_EQ(printed_[0], "Created site 'park' in " + options_.site.string() +
+  EXPECT_EQ(printed_[0], "Created site 'park' in " + options_.site.display +
                              ": local frame, positions in metres from the dock (for GPS "
                              "coordinates create the site first with 'littermap site init "
                              "--crs')");
@@ -128,7 +128,7 @@ TEST_F(SurveyTest, SkipsTheStagesUpToDateAndRunsTheOthers) {
   RunSurvey(options_, callbacks_);
   ASSERT_EQ(printed_.size(), 8u);
   EXPECT_EQ(printed_[3],
-            "Run week1 is already in " + options_.site.string() + " as run 1; nothing changed");
+            "Run week1 is already in " + options_.site.display + " as run 1; nothing changed");
 
   // Other results under the same name: the site keeps the ones it has.
   std::ofstream(dir_ / "out" / "run" / "items.csv", std::ios::app) << "4,can,15,3,0,0.1\n";
@@ -139,7 +139,7 @@ TEST_F(SurveyTest, SkipsTheStagesUpToDateAndRunsTheOthers) {
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::kBadInput);
     const std::string message = e.what();
-    EXPECT_EQ(message.rfind("survey stage 'ingest' failed: " + options_.site.string() +
+    EXPECT_EQ(message.rfind("survey stage 'ingest' failed: " + options_.site.display +
                                 ": already holds a run named 'week1' with other results (run 1)",
                             0),
               0u)
@@ -164,7 +164,7 @@ TEST_F(SurveyTest, NamesTheStageThatFailed) {
   }
   ASSERT_EQ(printed_.size(), 2u);
   EXPECT_EQ(printed_[1], "[1/5 reconstruct]");
-  EXPECT_TRUE(fs::exists(options_.site));
+  EXPECT_TRUE(fs::exists(options_.site.file));
   EXPECT_TRUE(fs::is_directory(dir_ / "out" / ".stages"));
   EXPECT_FALSE(fs::exists(dir_ / "out" / ".stages" / "reconstruct.done"));
 }
@@ -178,7 +178,7 @@ TEST_F(SurveyTest, WantsABagDirectory) {
     EXPECT_EQ(std::string(e.what()), options_.bag.string() + ": not a run bag directory");
   }
   EXPECT_TRUE(printed_.empty());
-  EXPECT_FALSE(fs::exists(options_.site));
+  EXPECT_FALSE(fs::exists(options_.site.file));
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
-// Ingest into a site database: idempotency, item persistence across runs, coverage, and the
-// site heatmap built from what was ingested.
+// Ingest into a site database, on both engines: idempotency, item persistence across runs,
+// coverage, and the site heatmap built from what was ingested.
 
 #include "site/run_ingest.hpp"
 
@@ -9,12 +9,15 @@
 
 #include "core/error.hpp"
 #include "heatmap/site_heatmap.hpp"
+#include "support/site_engines.hpp"
 #include "support/temp_dir.hpp"
 
 namespace littermap::site {
 namespace {
 
+using littermap::test::SiteEngine;
 using littermap::test::TempDir;
+using littermap::test::TestSite;
 
 // A run driving east along y = 10 from x = 0 to x = 30 (10 cm steps).
 RunInput EastRun(const std::string& digest, double start_time_s) {
@@ -36,17 +39,22 @@ RunItem Item(const std::string& id, const std::string& class_name, double x, dou
   return item;
 }
 
-class RunIngestTest : public ::testing::Test {
+class RunIngestTest : public ::testing::TestWithParam<SiteEngine> {
  protected:
   db::SiteDatabase Site() {
     db::SiteOptions options;
     options.name = "test";
-    return db::SiteDatabase::Create(dir_ / "site.gpkg", options);
+    return db::SiteDatabase::Create(site_.locator(), options);
   }
   TempDir dir_;
+  TestSite site_{GetParam(), dir_.path(), "site"};
 };
 
-TEST_F(RunIngestTest, IngestingARunTwiceChangesNothing) {
+INSTANTIATE_TEST_SUITE_P(Engines, RunIngestTest,
+                         ::testing::Values(SiteEngine::kGeoPackage, SiteEngine::kPostgis),
+                         littermap::test::SiteEngineName);
+
+TEST_P(RunIngestTest, IngestingARunTwiceChangesNothing) {
   db::SiteDatabase site = Site();
   RunInput run = EastRun("run-a", 1000.0);
   run.items = {Item("1", "can", 10.0, 11.0), Item("2", "bottle", 20.0, 9.5)};
@@ -66,7 +74,7 @@ TEST_F(RunIngestTest, IngestingARunTwiceChangesNothing) {
   EXPECT_EQ(site.RunTracks().size(), 1u);
 }
 
-TEST_F(RunIngestTest, AnItemSeenAgainIsTheSameItem) {
+TEST_P(RunIngestTest, AnItemSeenAgainIsTheSameItem) {
   db::SiteDatabase site = Site();
   RunInput a = EastRun("run-a", 1000.0);
   a.items = {Item("1", "can", 10.0, 11.0)};
@@ -89,7 +97,7 @@ TEST_F(RunIngestTest, AnItemSeenAgainIsTheSameItem) {
   EXPECT_EQ(items[1].times_seen, 1);
 }
 
-TEST_F(RunIngestTest, NearestPairsMatchFirst) {
+TEST_P(RunIngestTest, NearestPairsMatchFirst) {
   db::SiteDatabase site = Site();
   RunInput a = EastRun("run-a", 1000.0);
   a.items = {Item("1", "can", 10.0, 11.0), Item("2", "can", 10.6, 11.0)};
@@ -108,7 +116,7 @@ TEST_F(RunIngestTest, NearestPairsMatchFirst) {
   EXPECT_EQ(*detections[1].item_fid, 2);
 }
 
-TEST_F(RunIngestTest, CloseItemsOfOneRunStayTwoItems) {
+TEST_P(RunIngestTest, CloseItemsOfOneRunStayTwoItems) {
   db::SiteDatabase site = Site();
   RunInput a = EastRun("run-a", 1000.0);
   a.items = {Item("1", "can", 10.0, 11.0), Item("2", "can", 10.3, 11.0)};
@@ -121,7 +129,7 @@ TEST_F(RunIngestTest, CloseItemsOfOneRunStayTwoItems) {
   EXPECT_EQ(result.new_items, 0u);
 }
 
-TEST_F(RunIngestTest, TruthItemsOutsideTheCameraCoverageAreSkipped) {
+TEST_P(RunIngestTest, TruthItemsOutsideTheCameraCoverageAreSkipped) {
   db::SiteDatabase site = Site();
   RunInput run = EastRun("run-a", 1000.0);
   run.items = {Item("1", "can", 10.0, 10.5), Item("2", "can", 10.0, 30.0),  // 20 m to the side
@@ -133,7 +141,7 @@ TEST_F(RunIngestTest, TruthItemsOutsideTheCameraCoverageAreSkipped) {
   EXPECT_EQ(result.new_items, 2u);
 }
 
-TEST_F(RunIngestTest, RefusesARunWithoutATrajectory) {
+TEST_P(RunIngestTest, RefusesARunWithoutATrajectory) {
   db::SiteDatabase site = Site();
   RunInput run = EastRun("run-a", 0.0);
   run.T_site_base.resize(1);
@@ -144,7 +152,7 @@ TEST_F(RunIngestTest, RefusesARunWithoutATrajectory) {
   EXPECT_TRUE(site.Runs().empty());
 }
 
-TEST_F(RunIngestTest, SiteHeatmapSumsEffortAndSelectsRuns) {
+TEST_P(RunIngestTest, SiteHeatmapSumsEffortAndSelectsRuns) {
   db::SiteDatabase site = Site();
   RunInput a = EastRun("run-a", 1000.0);
   a.items = {Item("1", "can", 10.0, 11.0), Item("2", "cup", 20.0, 11.0)};
@@ -173,7 +181,7 @@ TEST_F(RunIngestTest, SiteHeatmapSumsEffortAndSelectsRuns) {
   EXPECT_THROW(heatmap::ComputeSiteHeatmap(site, options), BadInputError);
 }
 
-TEST_F(RunIngestTest, StaticLitterKeepsItsDensityWhenSurveyedMoreOften) {
+TEST_P(RunIngestTest, StaticLitterKeepsItsDensityWhenSurveyedMoreOften) {
   db::SiteDatabase site = Site();
   RunInput a = EastRun("run-a", 1000.0);
   a.items = {Item("1", "can", 10.0, 11.0)};
