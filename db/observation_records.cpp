@@ -10,8 +10,12 @@ namespace littermap::db {
 
 void SiteDatabase::MarkItemSeen(std::int64_t fid, std::int64_t run_id) {
   const auto update = connection_->Prepare(
-      "UPDATE litter_items SET last_run_id = CASE WHEN last_run_id > ?1 THEN last_run_id ELSE ?1 "
-      "END, times_seen = times_seen + 1 WHERE fid = ?2");
+      "UPDATE litter_items SET "
+      "first_run_id = CASE WHEN (SELECT start_time_s FROM runs WHERE run_id = ?1) < "
+      "(SELECT start_time_s FROM runs WHERE run_id = first_run_id) THEN ?1 ELSE first_run_id END, "
+      "last_run_id = CASE WHEN (SELECT start_time_s FROM runs WHERE run_id = ?1) > "
+      "(SELECT start_time_s FROM runs WHERE run_id = last_run_id) THEN ?1 ELSE last_run_id END, "
+      "times_seen = times_seen + 1 WHERE fid = ?2");
   update->Bind(1, run_id);
   update->Bind(2, fid);
   update->Run();

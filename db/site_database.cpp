@@ -103,10 +103,7 @@ SiteDatabase SiteDatabase::CreateGeoPackage(const std::filesystem::path& file,
     site.LoadSite();
     return site;
   } catch (...) {
-    std::error_code ignored;
-    for (const char* suffix : {"", "-wal", "-shm"}) {
-      std::filesystem::remove(file.string() + suffix, ignored);
-    }
+    Remove(file);
     throw;
   }
 }
@@ -146,6 +143,18 @@ SiteDatabase SiteDatabase::CreatePostgres(const SiteLocator& where, const SiteOp
 bool SiteDatabase::Exists(const SiteLocator& where) {
   if (!where.postgres()) return std::filesystem::exists(where.file);
   return PostgresConnection(where.conninfo, where.schema, where.display).HasTable("sites");
+}
+
+void SiteDatabase::Remove(const SiteLocator& where) {
+  if (!where.postgres()) {
+    std::error_code ignored;
+    for (const char* suffix : {"", "-wal", "-shm"}) {
+      std::filesystem::remove(where.file.string() + suffix, ignored);
+    }
+    return;
+  }
+  PostgresConnection connection(where.conninfo, where.schema, where.display);
+  connection.Execute("DROP SCHEMA IF EXISTS " + connection.QuotedSchema() + " CASCADE");
 }
 
 SiteDatabase SiteDatabase::Open(const SiteLocator& where) {

@@ -175,7 +175,9 @@ class SiteDatabase {
   std::vector<RunTrack> RunTracks();
   std::int64_t AddItem(const ItemRecord& item);
   std::vector<ItemRecord> Items();
-  // The item was seen again by run_id: last_run_id and times_seen move on.
+  // The item was seen again by run_id: times_seen counts it, and first_run_id / last_run_id
+  // become run_id when it started before the first / after the last run that saw the item, so
+  // they mean the earliest and latest survey whatever order the runs were ingested in.
   void MarkItemSeen(std::int64_t fid, std::int64_t run_id);
   void AddDetection(const DetectionRecord& detection);
   std::size_t DetectionCount(std::int64_t run_id);
@@ -189,6 +191,19 @@ class SiteDatabase {
   // sets of other filters stay.
   void ReplaceHotspots(const HotspotFilter& filter, const std::vector<HotspotRecord>& hotspots);
 
+  // Removes the site: the file (and its WAL), or the schema with everything in it. Nothing there
+  // is no error.
+  static void Remove(const SiteLocator& where);
+
+  // Where the engines differ, for code that reads and writes the tables column by column
+  // (site_copy.cpp): how a geometry parameter is written and a geometry column read (a
+  // GeoPackage blob; WKB through PostGIS), and the GeoPackage's layer extents.
+  std::string GeometryParameter(int index) const;
+  std::string GeometryColumn(const char* column) const;
+  std::vector<std::uint8_t> GeometryBytes(WkbType type, std::span<const PointXY> crs_points) const;
+  GeometryBlob ReadGeometry(std::span<const std::uint8_t> bytes, const std::string& where) const;
+  void ExtendLayerExtent(const std::string& table, const Envelope& crs_envelope);
+
  private:
   explicit SiteDatabase(std::unique_ptr<SqlConnection> connection);
   static SiteDatabase CreateGeoPackage(const std::filesystem::path& file,
@@ -199,14 +214,6 @@ class SiteDatabase {
   void ConfigureGeoPackage();
   void LoadSite();
   void RollbackQuietly() noexcept;
-
-  // Where the engines differ: how a geometry parameter is written and a geometry column read
-  // (a GeoPackage blob; WKB through PostGIS), and the GeoPackage's layer extents.
-  std::string GeometryParameter(int index) const;
-  std::string GeometryColumn(const char* column) const;
-  std::vector<std::uint8_t> GeometryBytes(WkbType type, std::span<const PointXY> crs_points) const;
-  GeometryBlob ReadGeometry(std::span<const std::uint8_t> bytes, const std::string& where) const;
-  void ExtendLayerExtent(const std::string& table, const Envelope& crs_envelope);
 
   std::unique_ptr<SqlConnection> connection_;
   SiteInfo site_;

@@ -23,6 +23,7 @@ class SqlStatement {
   virtual void BindReal(int index, double value) = 0;
   virtual void BindNull(int index) = 0;
   virtual void Bind(int index, std::string_view text) = 0;
+  // The bytes must stay alive until the statement has run (SQLite binds them without a copy).
   virtual void BindBlob(int index, std::span<const std::uint8_t> blob) = 0;
 
   // Steps once: true when a row is available, false when done.

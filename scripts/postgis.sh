@@ -45,10 +45,18 @@ run() { "${as_owner[@]}" "$@"; }
 
 mkdir -p "$dir"
 dir=$(cd "$dir" && pwd)
-data=$dir/data
+cluster=$dir
 if [[ $(id -u) -eq 0 ]]; then
   chown postgres: "$dir"
+  # A folder the postgres user cannot reach (under /root, say) keeps only the URL; the cluster
+  # goes to a folder of its own under /tmp, named after it.
+  if ! runuser -u postgres -- test -w "$dir"; then
+    cluster=${TMPDIR:-/tmp}/littermap-postgis-$(printf %s "$dir" | md5sum | cut -c1-12)
+    mkdir -p "$cluster"
+    chown postgres: "$cluster"
+  fi
 fi
+data=$cluster/data
 
 url() {
   local port
@@ -69,7 +77,8 @@ case $command in
       exit 0
     fi
     if [[ ! -f $data/PG_VERSION ]]; then
-      run "$bin/initdb" -D "$data" -U littermap --auth=trust -E UTF8 --locale=C.UTF-8 >"$dir/initdb.log"
+      run "$bin/initdb" -D "$data" -U littermap --auth=trust -E UTF8 --locale=C.UTF-8 \
+        >"$cluster/initdb.log"
     fi
     if [[ -z $port ]]; then
       port=$(sed -n 's/^port = \([0-9]*\).*/\1/p' "$data/postgresql.auto.conf" | tail -1)
@@ -81,18 +90,18 @@ case $command in
     {
       echo "port = $port"
       echo "listen_addresses = 'localhost'"
-      echo "unix_socket_directories = '$dir'"
+      echo "unix_socket_directories = '$cluster'"
     } >>"$data/postgresql.auto.conf"
-    if ! run "$bin/pg_ctl" -D "$data" -l "$dir/server.log" -w -t 60 start >/dev/null; then
-      echo "postgis.sh: the server did not start; see $dir/server.log:" >&2
-      tail -5 "$dir/server.log" >&2
+    if ! run "$bin/pg_ctl" -D "$data" -l "$cluster/server.log" -w -t 60 start >/dev/null; then
+      echo "postgis.sh: the server did not start; see $cluster/server.log:" >&2
+      tail -5 "$cluster/server.log" >&2
       exit 1
     fi
-    if ! run "$bin/psql" -h "$dir" -p "$port" -U littermap -d postgres -Atqc \
+    if ! run "$bin/psql" -h "$cluster" -p "$port" -U littermap -d postgres -Atqc \
         "SELECT 1 FROM pg_database WHERE datname = 'littermap'" | grep -q 1; then
-      run "$bin/createdb" -h "$dir" -p "$port" -U littermap littermap
+      run "$bin/createdb" -h "$cluster" -p "$port" -U littermap littermap
     fi
-    run "$bin/psql" -h "$dir" -p "$port" -U littermap -d littermap -qc \
+    run "$bin/psql" -h "$cluster" -p "$port" -U littermap -d littermap -qc \
       "SET client_min_messages = warning; CREATE EXTENSION IF NOT EXISTS postgis"
     url | tee "$dir/url"
     ;;

@@ -11,6 +11,7 @@
 
 #include "core/sqlite_database.hpp"
 #include "support/run_command.hpp"
+#include "support/synthetic_run_dir.hpp"
 #include "support/temp_dir.hpp"
 #include "support/test_files.hpp"
 
@@ -19,23 +20,7 @@ namespace {
 
 using test::RunLittermap;
 using test::TempDir;
-
-// A run along y = y0 from x = 0 to x = 40, heading east, 10 Hz at 0.5 m/s, with items next to
-// the path every 4 m.
-void WriteRun(const std::filesystem::path& dir, double y0, double t0, const std::string& cls) {
-  std::filesystem::create_directories(dir);
-  std::ofstream tum(dir / "trajectory.tum");
-  tum << "# timestamp tx ty tz qx qy qz qw\n";
-  for (int i = 0; i <= 800; ++i) {
-    char line[128];
-    std::snprintf(line, sizeof(line), "%.3f %.3f %.3f 0 0 0 0 1\n", t0 + 0.1 * i, 0.05 * i, y0);
-    tum << line;
-  }
-  std::ofstream items(dir / "items.csv");
-  items << "id,class,x,y,z,size_m,confidence\n";
-  for (int i = 1; i <= 9; ++i)
-    items << i << ',' << cls << ',' << 4 * i << ',' << y0 + 1 << ",0,0.1,0.9\n";
-}
+using test::WriteSyntheticRun;
 
 std::int64_t Integer(const std::filesystem::path& file, const std::string& sql) {
   SqliteDatabase database(file, SqliteDatabase::Mode::kReadOnly);
@@ -52,7 +37,7 @@ std::string Text(const std::filesystem::path& file, const std::string& sql) {
 TEST(IngestHeatmapCli, IngestIsIdempotentAndHeatmapWritesEverything) {
   TempDir dir;
   const auto site = dir / "site.gpkg";
-  WriteRun(dir / "run1", 10.0, 1700000000.0, "can");
+  WriteSyntheticRun(dir / "run1", 10.0, 1700000000.0, "can");
   ASSERT_EQ(RunLittermap("site init " + site.string() +
                          " --name p --crs EPSG:32633 --origin 500000 5000000")
                 .exit_code,
@@ -92,7 +77,7 @@ TEST(IngestHeatmapCli, ReportReadsASiteItMayNotWrite) {
   fs::create_directories(dir / "share");
   const fs::path site = dir / "share" / "site.gpkg";
   ASSERT_EQ(RunLittermap("-q site init " + test::Quote(site) + " --name p").exit_code, 0);
-  WriteRun(dir / "run1", 10.0, 1700000000.0, "can");
+  WriteSyntheticRun(dir / "run1", 10.0, 1700000000.0, "can");
   ASSERT_EQ(
       RunLittermap("-q ingest " + test::Quote(site) + " " + test::Quote(dir / "run1")).exit_code,
       0);
@@ -131,8 +116,8 @@ TEST(IngestHeatmapCli, TwoIngestsAtOnceBothLand) {
   const auto site = dir / "site.gpkg";
   ASSERT_EQ(RunLittermap("site init " + site.string() + " --name p").exit_code, 0);
   for (int i = 0; i < 4; ++i) {
-    WriteRun(dir / ("run" + std::to_string(i)), 5.0 * i, 1700000000.0 + 1000 * i,
-             i % 2 ? "cup" : "can");
+    WriteSyntheticRun(dir / ("run" + std::to_string(i)), 5.0 * i, 1700000000.0 + 1000 * i,
+                      i % 2 ? "cup" : "can");
   }
   // Four processes started together; SQLite's busy timeout serialises their transactions.
   std::string command;
@@ -153,7 +138,7 @@ TEST(IngestHeatmapCli, TwoIngestsAtOnceBothLand) {
 
 TEST(IngestHeatmapCli, RefusesWhatIsNotASite) {
   TempDir dir;
-  WriteRun(dir / "run", 0.0, 0.0, "can");
+  WriteSyntheticRun(dir / "run", 0.0, 0.0, "can");
   std::ofstream(dir / "notes.gpkg") << "plain text, not SQLite at all, long enough to be a header "
                                        "of one hundred bytes if SQLite tried to read it as one";
   const auto text =
@@ -169,8 +154,8 @@ TEST(IngestHeatmapCli, RunNamesAreNeverEmptyNorSilentlyTwiceAndOutputsNeverAFile
   TempDir dir;
   const auto site = dir / "site.gpkg";
   ASSERT_EQ(RunLittermap("site init " + site.string() + " --name p").exit_code, 0);
-  WriteRun(dir / "week1", 10.0, 1700000000.0, "can");
-  WriteRun(dir / "other" / "week1", 20.0, 1700005000.0, "cup");
+  WriteSyntheticRun(dir / "week1", 10.0, 1700000000.0, "can");
+  WriteSyntheticRun(dir / "other" / "week1", 20.0, 1700005000.0, "cup");
   const auto slash = RunLittermap("ingest " + site.string() + " " + (dir / "week1").string() + "/");
   ASSERT_EQ(slash.exit_code, 0) << slash.output;
   EXPECT_EQ(Text(site, "SELECT name FROM runs"), "week1");
@@ -212,10 +197,10 @@ TEST(IngestHeatmapCli, GisLayersSayWhatTheyShowAndGdalReadsThemQuietly) {
                   .exit_code,
               0);
     // Four runs along one path: every 4 m three cans and a bottle lie within a metre or two.
-    WriteRun(dir / "week1", 10.0, 1795000000.0, "can");
-    WriteRun(dir / "week2", 11.0, 1795600000.0, "bottle");
-    WriteRun(dir / "week3", 12.0, 1796200000.0, "can");
-    WriteRun(dir / "week4", 9.0, 1796800000.0, "can");
+    WriteSyntheticRun(dir / "week1", 10.0, 1795000000.0, "can");
+    WriteSyntheticRun(dir / "week2", 11.0, 1795600000.0, "bottle");
+    WriteSyntheticRun(dir / "week3", 12.0, 1796200000.0, "can");
+    WriteSyntheticRun(dir / "week4", 9.0, 1796800000.0, "can");
     for (const char* run : {"week1", "week2", "week3", "week4"}) {
       ASSERT_EQ(
           RunLittermap("-q ingest " + test::Quote(site) + " " + test::Quote(dir / run)).exit_code,

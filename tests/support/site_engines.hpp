@@ -13,7 +13,7 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "db/postgres_connection.hpp"
+#include "db/site_database.hpp"
 #include "db/site_locator.hpp"
 
 namespace littermap::test {
@@ -56,8 +56,7 @@ class TestSite {
   ~TestSite() {
     if (!locator_.postgres()) return;
     try {
-      db::PostgresConnection connection(locator_.conninfo, locator_.schema, locator_.display);
-      connection.Execute("DROP SCHEMA IF EXISTS " + connection.QuotedSchema() + " CASCADE");
+      db::SiteDatabase::Remove(locator_);
     } catch (const std::exception&) {  // NOLINT(bugprone-empty-catch): the test reported already
     }
   }
