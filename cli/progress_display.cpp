@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 
 namespace littermap::cli {
 namespace {
@@ -28,12 +29,16 @@ ProgressDisplay::ProgressDisplay() : terminal_(isatty(STDERR_FILENO) == 1) {}
 
 void ProgressDisplay::Update(const Progress& progress) {
   const auto now = std::chrono::steady_clock::now();
-  const bool new_task = progress.task != last_task_;
+  // Each task is throttled on its own, so runs surveyed side by side, whose tasks take turns,
+  // each show their progress every interval; a task seen for the first time starts a new line.
+  last_task_ = std::string(progress.task);
+  const auto drawn = last_draw_of_task_.find(last_task_);
+  const bool new_task = drawn == last_draw_of_task_.end();
   const bool finished = progress.total != 0 && progress.done >= progress.total;
   const auto interval = terminal_ ? kTerminalRedraw : kLogInterval;
-  if (!new_task && !finished && now - last_draw_ < interval) return;
+  if (!new_task && !finished && now - drawn->second < interval) return;
   if (new_task && bar_open_) Finish();
-  last_task_ = std::string(progress.task);
+  last_draw_of_task_[last_task_] = now;
   last_draw_ = now;
 
   if (!terminal_) {
@@ -74,7 +79,6 @@ void ProgressDisplay::Status(const std::string& line) {
 void ProgressDisplay::Finish() {
   if (bar_open_) std::fputc('\n', stderr);
   bar_open_ = false;
-  last_task_.clear();
 }
 
 }  // namespace littermap::cli

@@ -3,6 +3,7 @@
 // every few seconds (and at each new task), so logs of long runs stay readable.
 
 #include <chrono>
+#include <map>
 #include <string>
 
 #include "core/progress.hpp"
@@ -22,6 +23,7 @@ class ProgressDisplay {
   bool terminal_;
   bool bar_open_ = false;
   std::string last_task_;
+  std::map<std::string, std::chrono::steady_clock::time_point> last_draw_of_task_;
   std::chrono::steady_clock::time_point last_draw_{};
 };
 

@@ -228,10 +228,13 @@ SiteDatabase SiteDatabase::OpenPostgres(const SiteLocator& where, bool read_only
   if (!connection.HasTable("sites") || !connection.HasTable("littermap_schema_version")) {
     throw BadInputError(where.display + ": no such site (create it with 'littermap site init')");
   }
-  if (read_only) connection.Execute("SET default_transaction_read_only = on");
-  // Sites in PostgreSQL start at the latest schema; a later one brings its own migrations.
-  RequireLatestVersion(where.display, PostgresSchemaVersion(connection),
-                       "; this littermap has no migration for a PostGIS site of that version");
+  if (read_only) {
+    connection.Execute("SET default_transaction_read_only = on");
+    RequireLatestVersion(where.display, PostgresSchemaVersion(connection),
+                         "; a command that writes the site (ingest, heatmap) upgrades it");
+  } else {
+    site.InTransaction([&] { MigratePostgresSiteSchema(connection); });
+  }
   CheckSiteSchema(connection);
   site.LoadSite();
   return site;

@@ -175,6 +175,8 @@ class SiteDatabase {
   std::vector<RunTrack> RunTracks();
   std::int64_t AddItem(const ItemRecord& item);
   std::vector<ItemRecord> Items();
+  // The items whose site-frame position lies in the envelope (an index serves it).
+  std::vector<ItemRecord> ItemsWithin(const Envelope& site_envelope);
   // The item was seen again by run_id: times_seen counts it, and first_run_id / last_run_id
   // become run_id when it started before the first / after the last run that saw the item, so
   // they mean the earliest and latest survey whatever order the runs were ingested in.

@@ -12,6 +12,9 @@ struct Migration {
   int version;
   const char* description;
   const char* sql;
+  // Whether PostGIS sites made before it need it too (those start at version 4, the first
+  // version a PostGIS site could have, so the statement must read the same in both engines).
+  bool postgres = false;
 };
 
 // Version 1: the site, its runs and what they saw. Feature tables keep their geometry in the
@@ -145,12 +148,19 @@ ALTER TABLE hotspots ADD COLUMN filter_to_utc TEXT NOT NULL DEFAULT '';
 PRAGMA user_version = 10300;
 )sql";
 
+// Version 5: an index on the items' site coordinates, so ingest reads only the items near a
+// run rather than the whole site (1,000,000 items in a city's park).
+constexpr const char* kVersion5 = R"sql(
+CREATE INDEX litter_items_site_x_m_site_y_m ON litter_items (site_x_m, site_y_m);
+)sql";
+
 const std::vector<Migration>& Migrations() {
   static const std::vector<Migration> migrations = {
       {1, "sites, runs, run_tracks, litter_items, detections, coverage, hotspots", kVersion1},
       {2, "site_map: the occupancy map later runs are registered onto", kVersion2},
       {3, "runs.reconstruction_quality: reconstruct's quality.json of each run", kVersion3},
       {4, "run_tracks.run_name/start_utc; hotspots per filter; GeoPackage 1.3", kVersion4},
+      {5, "litter_items index on site_x_m, site_y_m", kVersion5, true},
   };
   return migrations;
 }
@@ -186,6 +196,35 @@ MigrationResult MigrateSiteSchema(SqliteDatabase& database) {
     record.Bind(1, std::int64_t{migration.version});
     record.Bind(2, migration.description);
     record.Run();
+    result.to_version = migration.version;
+  }
+  return result;
+}
+
+MigrationResult MigratePostgresSiteSchema(SqlConnection& connection) {
+  const auto query = connection.Prepare("SELECT max(version) FROM littermap_schema_version");
+  MigrationResult result;
+  result.from_version =
+      query->Step() && !query->ColumnIsNull(0) ? static_cast<int>(query->ColumnInt64(0)) : 0;
+  result.to_version = result.from_version;
+  if (result.from_version > LatestSiteSchemaVersion()) {
+    throw BadInputError(connection.name() + ": site schema version " +
+                        std::to_string(result.from_version) + " is newer than this littermap (" +
+                        std::to_string(LatestSiteSchemaVersion()) + "); update littermap");
+  }
+  for (const Migration& migration : Migrations()) {
+    if (migration.version <= result.from_version) continue;
+    if (!migration.postgres) {
+      throw InternalError(connection.name() + ": a PostGIS site of version " +
+                          std::to_string(result.from_version) + " needs migration " +
+                          std::to_string(migration.version) + ", which is GeoPackage-only");
+    }
+    connection.Execute(migration.sql);
+    const auto record = connection.Prepare(
+        "INSERT INTO littermap_schema_version (version, description) VALUES (?, ?)");
+    record->Bind(1, std::int64_t{migration.version});
+    record->Bind(2, migration.description);
+    record->Run();
     result.to_version = migration.version;
   }
   return result;

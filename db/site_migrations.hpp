@@ -5,6 +5,7 @@
 // guessed at.
 
 #include "core/sqlite_database.hpp"
+#include "db/sql_connection.hpp"
 
 namespace littermap::db {
 
@@ -21,5 +22,9 @@ int SiteSchemaVersion(SqliteDatabase& database);
 
 // Throws BadInputError naming the file when its schema is newer than this build knows.
 MigrationResult MigrateSiteSchema(SqliteDatabase& database);
+
+// The same for a PostGIS site (its schema made from site_schema.hpp at the version it records):
+// the later migrations, which read the same in both engines.
+MigrationResult MigratePostgresSiteSchema(SqlConnection& connection);
 
 }  // namespace littermap::db

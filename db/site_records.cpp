@@ -193,25 +193,46 @@ std::int64_t SiteDatabase::AddItem(const ItemRecord& item) {
   return fid;
 }
 
-std::vector<ItemRecord> SiteDatabase::Items() {
-  const auto query = connection_->Prepare(
-      "SELECT fid, class, site_x_m, site_y_m, z_m, size_m, confidence, first_run_id, "
-      "last_run_id, times_seen FROM litter_items ORDER BY fid");
+namespace {
+
+constexpr const char* kItemColumns =
+    "SELECT fid, class, site_x_m, site_y_m, z_m, size_m, confidence, first_run_id, last_run_id, "
+    "times_seen FROM litter_items ";
+
+std::vector<ItemRecord> ReadItems(SqlStatement& query) {
   std::vector<ItemRecord> items;
-  while (query->Step()) {
+  while (query.Step()) {
     ItemRecord item;
-    item.fid = query->ColumnInt64(0);
-    item.class_name = query->ColumnText(1);
-    item.site_xy = {query->ColumnDouble(2), query->ColumnDouble(3)};
-    item.z_m = query->ColumnDouble(4);
-    item.size_m = query->ColumnDouble(5);
-    item.confidence = query->ColumnDouble(6);
-    item.first_run_id = query->ColumnInt64(7);
-    item.last_run_id = query->ColumnInt64(8);
-    item.times_seen = static_cast<int>(query->ColumnInt64(9));
+    item.fid = query.ColumnInt64(0);
+    item.class_name = query.ColumnText(1);
+    item.site_xy = {query.ColumnDouble(2), query.ColumnDouble(3)};
+    item.z_m = query.ColumnDouble(4);
+    item.size_m = query.ColumnDouble(5);
+    item.confidence = query.ColumnDouble(6);
+    item.first_run_id = query.ColumnInt64(7);
+    item.last_run_id = query.ColumnInt64(8);
+    item.times_seen = static_cast<int>(query.ColumnInt64(9));
     items.push_back(std::move(item));
   }
   return items;
+}
+
+}  // namespace
+
+std::vector<ItemRecord> SiteDatabase::Items() {
+  const auto query = connection_->Prepare(std::string(kItemColumns) + "ORDER BY fid");
+  return ReadItems(*query);
+}
+
+std::vector<ItemRecord> SiteDatabase::ItemsWithin(const Envelope& site_envelope) {
+  const auto query = connection_->Prepare(
+      std::string(kItemColumns) +
+      "WHERE site_x_m BETWEEN ? AND ? AND site_y_m BETWEEN ? AND ? ORDER BY fid");
+  query->BindReal(1, site_envelope.min_x);
+  query->BindReal(2, site_envelope.max_x);
+  query->BindReal(3, site_envelope.min_y);
+  query->BindReal(4, site_envelope.max_y);
+  return ReadItems(*query);
 }
 
 }  // namespace littermap::db

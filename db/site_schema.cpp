@@ -1,5 +1,7 @@
 #include "db/site_schema.hpp"
 
+#include <algorithm>
+
 #include "core/error.hpp"
 
 namespace littermap::db {
@@ -90,7 +92,7 @@ const std::vector<TableSpec>& SiteSchema() {
         {"last_run_id", T::kInteger, "NOT NULL REFERENCES runs(run_id)"},
         {"times_seen", T::kInteger, "NOT NULL DEFAULT 1"}},
        "",
-       {"geom", "first_run_id", "last_run_id"}},
+       {"geom", "first_run_id", "last_run_id", "site_x_m, site_y_m"}},
       {"detections",
        {{"detection_id", T::kId},
         {"run_id", T::kInteger, "NOT NULL REFERENCES runs(run_id) ON DELETE CASCADE"},
@@ -168,8 +170,11 @@ std::string PostgresSiteSchemaSql(int srid) {
         geometry |= std::string(spec.name) == column &&
                     (spec.type == T::kPoint || spec.type == T::kLineString);
       }
-      sql += "CREATE INDEX " + std::string(table.name) + "_" + column + " ON " + table.name +
-             (geometry ? " USING GIST (" : " (") + column + ");\n";
+      std::string name = std::string(table.name) + "_" + column;
+      std::replace(name.begin(), name.end(), ',', '_');
+      std::erase(name, ' ');
+      sql += "CREATE INDEX " + name + " ON " + table.name + (geometry ? " USING GIST (" : " (") +
+             column + ");\n";
     }
   }
   return sql;

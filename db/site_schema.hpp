@@ -22,8 +22,9 @@ struct ColumnSpec {
 struct TableSpec {
   const char* name;
   std::vector<ColumnSpec> columns;
-  const char* table_constraints = "";        // e.g. UNIQUE (run_id, run_item_id)
-  std::vector<const char*> indexed_columns;  // one plain index each (GiST for geometry)
+  const char* table_constraints = "";  // e.g. UNIQUE (run_id, run_item_id)
+  // One index each, named TABLE_COLUMNS: a column (GiST for geometry) or a list "a, b".
+  std::vector<const char*> indexed_columns;
 };
 
 const std::vector<TableSpec>& SiteSchema();

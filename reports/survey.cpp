@@ -1,7 +1,14 @@
 #include "reports/survey.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <exception>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -14,6 +21,7 @@
 #include "run/reconstruct_run.hpp"
 #include "run/run_files.hpp"
 #include "run/run_name.hpp"
+#include "run/run_start.hpp"
 #include "run/stage_marker.hpp"
 #include "site/run_directory_ingest.hpp"
 
@@ -150,28 +158,171 @@ void RunStage(const Survey& survey, const Stage& stage, const std::string& label
 
 }  // namespace
 
-SurveyResult RunSurvey(const SurveyOptions& options, const SurveyCallbacks& callbacks) {
+namespace {
+
+// The survey's directories, named after the run; checks the bag.
+std::unique_ptr<Survey> PrepareSurvey(const SurveyOptions& options,
+                                      const SurveyCallbacks& callbacks) {
   std::error_code error;
   if (!fs::exists(options.bag, error)) throw FileFailure(options.bag, "cannot read", ENOENT);
   if (!fs::is_directory(options.bag, error)) {
     throw BadInputError(options.bag.string() + ": not a run bag directory");
   }
-  Survey survey(options, callbacks);
-  survey.name = run::RunName(options.name, options.bag);
-  survey.out = options.output_dir.empty() ? fs::path(survey.name + "-survey") : options.output_dir;
-  survey.run_dir = survey.out / "run";
-  survey.maps_dir = survey.out / "maps";
-  survey.report_dir = survey.out / "report";
-  survey.stages_dir = survey.out / ".stages";
+  auto survey = std::make_unique<Survey>(options, callbacks);
+  survey->name = run::RunName(options.name, options.bag);
+  survey->out =
+      options.output_dir.empty() ? fs::path(survey->name + "-survey") : options.output_dir;
+  survey->run_dir = survey->out / "run";
+  survey->maps_dir = survey->out / "maps";
+  survey->report_dir = survey->out / "report";
+  survey->stages_dir = survey->out / ".stages";
+  return survey;
+}
+
+// Stages [first, last) of the survey.
+void RunStages(Survey& survey, std::size_t first, std::size_t last) {
   fs::create_directories(survey.stages_dir);
-  OpenOrCreateSite(survey);
   const std::vector<Stage> stages = Stages(survey);
-  for (std::size_t i = 0; i < stages.size(); ++i) {
+  for (std::size_t i = first; i < last; ++i) {
     RunStage(survey, stages[i],
              "[" + std::to_string(i + 1) + "/" + std::to_string(stages.size()) + " " +
                  stages[i].name + "]");
   }
+}
+
+constexpr std::size_t kIngestStage = 2;  // reconstruct, detect | ingest, heatmap, report
+constexpr std::size_t kStageCount = 5;
+
+SurveyResult ResultOf(Survey& survey) {
   return {survey.name, survey.out, survey.report_dir / "index.html", std::move(survey.report)};
+}
+
+// The callbacks of one run among several: its name before every line, one call at a time.
+SurveyCallbacks RunCallbacks(const SurveyCallbacks& callbacks, const std::string& name,
+                             std::mutex& mutex) {
+  const std::string prefix = "[" + name + "] ";
+  SurveyCallbacks run;
+  if (callbacks.progress) {
+    run.progress = [&callbacks, &mutex, prefix](const Progress& update) {
+      const std::string task = prefix + std::string(update.task);
+      Progress prefixed = update;
+      prefixed.task = task;
+      const std::lock_guard lock(mutex);
+      callbacks.progress(prefixed);
+    };
+  }
+  if (callbacks.print) {
+    run.print = [&callbacks, &mutex, prefix](const std::string& text) {
+      const std::lock_guard lock(mutex);
+      callbacks.print(prefix + text);
+    };
+  }
+  if (callbacks.warn) {
+    run.warn = [&callbacks, &mutex, prefix](const std::string& message) {
+      const std::lock_guard lock(mutex);
+      callbacks.warn(prefix + message);
+    };
+  }
+  return run;
+}
+
+}  // namespace
+
+SurveyResult RunSurvey(const SurveyOptions& options, const SurveyCallbacks& callbacks) {
+  const std::unique_ptr<Survey> survey = PrepareSurvey(options, callbacks);
+  fs::create_directories(survey->stages_dir);
+  OpenOrCreateSite(*survey);
+  RunStages(*survey, 0, kStageCount);
+  return ResultOf(*survey);
+}
+
+std::vector<SurveyResult> RunSurveys(const std::vector<SurveyOptions>& runs, int jobs,
+                                     const SurveyCallbacks& callbacks) {
+  if (jobs < 1) throw UsageError("survey: -j must be at least 1");
+  if (runs.empty()) return {};
+  std::mutex mutex;
+  std::vector<SurveyCallbacks> run_callbacks;
+  std::vector<std::unique_ptr<Survey>> surveys;
+  std::set<std::string> names, outputs;
+  for (const SurveyOptions& options : runs) {
+    if (options.site.display != runs.front().site.display) {
+      throw UsageError("survey: the runs go to different sites (" + runs.front().site.display +
+                       ", " + options.site.display + "); survey each site on its own");
+    }
+    run_callbacks.push_back(
+        RunCallbacks(callbacks, run::RunName(options.name, options.bag), mutex));
+  }
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    surveys.push_back(PrepareSurvey(runs[i], run_callbacks[i]));
+    const Survey& survey = *surveys.back();
+    if (!names.insert(survey.name).second) {
+      throw UsageError("survey: two runs are named '" + survey.name +
+                       "'; give the bags distinct folder names");
+    }
+    if (!outputs.insert(fs::weakly_canonical(survey.out).string()).second) {
+      throw UsageError("survey: two runs would write to " + survey.out.string());
+    }
+  }
+  fs::create_directories(surveys.front()->stages_dir);
+  OpenOrCreateSite(*surveys.front());
+
+  // Reconstruct and detect, `jobs` runs at a time; a run's failure is kept for the end.
+  std::vector<std::string> failures(surveys.size());
+  std::vector<ErrorKind> kinds(surveys.size(), ErrorKind::kInternal);
+  const auto fail = [&](std::size_t i, const std::exception& e) {
+    failures[i] = surveys[i]->name + ": " + e.what();
+    kinds[i] = KindOf(e);
+  };
+  std::atomic<std::size_t> next{0};
+  const auto worker = [&] {
+    for (std::size_t i = next++; i < surveys.size(); i = next++) {
+      try {
+        RunStages(*surveys[i], 0, kIngestStage);
+      } catch (const std::exception& e) {
+        fail(i, e);
+      }
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int t = 1; t < std::min<int>(jobs, static_cast<int>(surveys.size())); ++t) {
+    threads.emplace_back(worker);
+  }
+  worker();
+  for (std::thread& thread : threads) thread.join();
+
+  // Ingest, heatmap and report in start-time order.
+  std::vector<std::pair<double, std::size_t>> order;
+  for (std::size_t i = 0; i < surveys.size(); ++i) {
+    if (!failures[i].empty()) continue;
+    try {
+      order.emplace_back(run::RunStartTimeS(surveys[i]->run_dir), i);
+    } catch (const std::exception& e) {
+      fail(i, e);
+    }
+  }
+  std::stable_sort(order.begin(), order.end());
+  std::vector<SurveyResult> results;
+  for (const auto& [start, i] : order) {
+    try {
+      RunStages(*surveys[i], kIngestStage, kStageCount);
+      results.push_back(ResultOf(*surveys[i]));
+    } catch (const std::exception& e) {
+      fail(i, e);
+    }
+  }
+  std::string message;
+  std::optional<ErrorKind> kind;
+  for (std::size_t i = 0; i < surveys.size(); ++i) {
+    if (failures[i].empty()) continue;
+    if (!kind) kind = kinds[i];
+    message += (message.empty() ? "" : "\n") + failures[i];
+  }
+  if (kind) {
+    throw Error(*kind, std::to_string(surveys.size() - results.size()) + " of " +
+                           std::to_string(surveys.size()) +
+                           " runs failed (the others finished):\n" + message);
+  }
+  return results;
 }
 
 }  // namespace littermap::reports

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "core/progress.hpp"
 #include "db/site_locator.hpp"
@@ -56,5 +57,16 @@ struct SurveyResult {
 // Throws UsageError when the bag is not a directory; Error of the failing stage's kind naming
 // the stage and the output directory.
 SurveyResult RunSurvey(const SurveyOptions& options, const SurveyCallbacks& callbacks);
+
+// Several runs of one site: reconstruct and detect `jobs` runs at a time, then ingest, heatmap
+// and report each run in the order the runs started (the earliest first, whatever order the
+// bags were given in), so the site and each run's report are what surveying them one by one in
+// time order gives. Every line and progress report names its run ("[NAME] "), and callbacks are
+// called from one thread at a time. A run that fails does not stop the others: they finish (their
+// outputs and reports stay on disk), then an Error naming each failed run and its stage is
+// thrown, of the first failure's kind. Throws UsageError when the runs do not share one site or
+// two share a name or an output directory, or jobs < 1.
+std::vector<SurveyResult> RunSurveys(const std::vector<SurveyOptions>& runs, int jobs,
+                                     const SurveyCallbacks& callbacks);
 
 }  // namespace littermap::reports

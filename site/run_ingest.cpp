@@ -114,7 +114,18 @@ void StoreItems(db::SiteDatabase& site, const RunInput& run, const IngestOptions
       result.items_unobserved += !observed[i];
     }
   }
-  const ItemIndex known(site.Items(), options.same_item_radius_m);
+  // Only the known items within reach of this run's: a site holds a city park's years.
+  std::vector<db::PointXY> places;
+  for (std::size_t i = 0; i < run.items.size(); ++i) {
+    if (observed[i]) places.push_back(run.items[i].xy);
+  }
+  db::Envelope reach = db::EnvelopeOf(places);
+  reach.min_x -= options.same_item_radius_m;
+  reach.max_x += options.same_item_radius_m;
+  reach.min_y -= options.same_item_radius_m;
+  reach.max_y += options.same_item_radius_m;
+  const ItemIndex known(places.empty() ? std::vector<db::ItemRecord>{} : site.ItemsWithin(reach),
+                        options.same_item_radius_m);
   std::vector<ItemIndex::Candidate> candidates;
   for (std::size_t i = 0; i < run.items.size(); ++i) {
     if (observed[i]) known.AddCandidates(run.items[i], i, candidates);

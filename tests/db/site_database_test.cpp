@@ -284,12 +284,17 @@ TEST(SiteDatabase, AVersionOneSiteIsMigratedOnOpen) {
     for (const char* column : {"filter_class", "filter_from_utc", "filter_to_utc"}) {
       site.sqlite().Execute(std::string("ALTER TABLE hotspots DROP COLUMN ") + column);
     }
+    site.sqlite().Execute("DROP INDEX litter_items_site_x_m_site_y_m");
     site.sqlite().Execute("PRAGMA user_version = 10400");
     site.sqlite().Execute("DELETE FROM littermap_schema_version WHERE version > 1");
   }
   SiteDatabase site = SiteDatabase::Open(file);
-  EXPECT_EQ(site.site().schema_version, 4);
+  EXPECT_EQ(site.site().schema_version, 5);
   EXPECT_EQ(Integer(site.sqlite(), "PRAGMA user_version"), 10300);
+  EXPECT_EQ(Integer(site.sqlite(),
+                    "SELECT count(*) FROM sqlite_master WHERE name = "
+                    "'litter_items_site_x_m_site_y_m'"),
+            1);
   EXPECT_EQ(Text(site.sqlite(), "SELECT run_name || ' ' || start_utc FROM run_tracks"),
             "week 1 2026-11-18T11:06:40Z");
   EXPECT_TRUE(site.sqlite().HasTable("site_map"));

@@ -209,6 +209,25 @@ TEST_P(SiteEnginesTest, AFailedTransactionLeavesNothing) {
   }
 }
 
+// A PostGIS site made at version 4 (before the items' coordinate index) gets it when a writing
+// command opens it; a reading one says that it needs that.
+TEST(PostgisSite, AnOlderSiteIsMigratedOnOpen) {
+  TempDir dir;
+  TestSite where(SiteEngine::kPostgis, dir.path(), "v4");
+  {
+    SiteDatabase site = SiteDatabase::Create(where.locator(), Options("p"));
+    site.sql().Execute("DROP INDEX litter_items_site_x_m_site_y_m");
+    site.sql().Execute("UPDATE littermap_schema_version SET version = 4");
+  }
+  EXPECT_THROW(SiteDatabase::OpenReadOnly(where.locator()), BadInputError);
+  SiteDatabase site = SiteDatabase::Open(where.locator());
+  EXPECT_EQ(site.site().schema_version, 5);
+  EXPECT_EQ(Text(site.sql(),
+                 "SELECT count(*) FROM pg_indexes WHERE schemaname = current_schema() AND "
+                 "indexname = 'litter_items_site_x_m_site_y_m'"),
+            "1");
+}
+
 TEST(PostgisSite, AServerThatIsNotThereIsTheEnvironment) {
   const SiteLocator where = ParseSiteLocator("postgresql://nobody@127.0.0.1:1/none?site=park");
   try {

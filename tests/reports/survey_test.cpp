@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 using littermap::test::TempDir;
 
 // A 20 m x 10 m walled map (0.1 m cells) and a run along y = 2 with three cans beside it.
-void WriteRunDirectory(const fs::path& run) {
+void WriteRunDirectory(const fs::path& run, double start_time_s = 1.7e9) {
   fs::create_directories(run);
   std::ofstream(run / "map.yaml") << "image: map.pgm\nresolution: 0.1\norigin: [-1.0, -1.0, 0.0]\n"
                                      "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
@@ -39,7 +39,7 @@ void WriteRunDirectory(const fs::path& run) {
   std::ofstream tum(run / "trajectory.tum");
   for (int i = 0; i <= 300; ++i) {
     char line[96];
-    std::snprintf(line, sizeof line, "%.3f %.3f 2 0 0 0 0 1\n", 1.7e9 + 0.1 * i, 0.05 * i);
+    std::snprintf(line, sizeof line, "%.3f %.3f 2 0 0 0 0 1\n", start_time_s + 0.1 * i, 0.05 * i);
     tum << line;
   }
   std::ofstream(run / "items.csv") << "id,class,x,y,z,size_m\n1,can,3,3,0,0.1\n"
@@ -179,6 +179,73 @@ TEST_F(SurveyTest, WantsABagDirectory) {
   }
   EXPECT_TRUE(printed_.empty());
   EXPECT_FALSE(fs::exists(options_.site.file));
+}
+
+// Three runs given out of time order, two at a time: the site takes them in the order they
+// started, every line names its run, and a run that fails leaves the others finished.
+TEST_F(SurveyTest, SeveralRunsReachTheSiteInTheOrderTheyStarted) {
+  const std::vector<std::pair<std::string, double>> weeks = {
+      {"week3", 1.7e9 + 2 * 604800.0}, {"week1", 1.7e9}, {"week2", 1.7e9 + 604800.0}};
+  std::vector<SurveyOptions> runs;
+  for (const auto& [name, start] : weeks) {
+    SurveyOptions run = options_;
+    run.name = name;
+    run.bag = dir_ / name / "bag";
+    run.output_dir = dir_ / "out" / name;
+    fs::create_directories(run.bag);
+    fs::create_directories(run.output_dir / ".stages");
+    WriteRunDirectory(run.output_dir / "run", start);
+    runs.push_back(run);
+  }
+  Age(dir_.path());
+  for (const SurveyOptions& run : runs) {
+    std::ofstream(run.output_dir / ".stages" / "reconstruct.done") << "reconstruct finished\n";
+    std::ofstream(run.output_dir / ".stages" / "detect.done") << "detect finished\n";
+  }
+  const std::vector<SurveyResult> results = RunSurveys(runs, 2, callbacks_);
+  ASSERT_EQ(results.size(), 3u);
+  EXPECT_EQ(results[0].name, "week1");
+  EXPECT_EQ(results[1].name, "week2");
+  EXPECT_EQ(results[2].name, "week3");
+  ASSERT_EQ(results[2].report.runs.size(), 3u);  // the last report sees the whole site
+  std::vector<std::string> ingested;
+  for (const std::string& line : printed_) {
+    EXPECT_EQ(line.front(), '[') << line;
+    if (line.find("] Ingested run ") != std::string::npos ||
+        line.find("\nIngested run ") != std::string::npos) {
+      ingested.push_back(line.substr(0, line.find(']') + 1));
+    }
+  }
+  EXPECT_EQ(ingested, (std::vector<std::string>{"[week1]", "[week2]", "[week3]"}));
+
+  // A fourth run whose items cannot be read: the others are done, the error names it.
+  SurveyOptions broken = options_;
+  broken.name = "week4";
+  broken.bag = dir_ / "week4" / "bag";
+  broken.output_dir = dir_ / "out" / "week4";
+  fs::create_directories(broken.bag);
+  fs::create_directories(broken.output_dir / ".stages");
+  WriteRunDirectory(broken.output_dir / "run", 1.7e9 + 3 * 604800.0);
+  std::ofstream(broken.output_dir / "run" / "items.csv") << "id,class\n1\n";
+  Age(broken.output_dir);
+  std::ofstream(broken.output_dir / ".stages" / "reconstruct.done") << "reconstruct finished\n";
+  std::ofstream(broken.output_dir / ".stages" / "detect.done") << "detect finished\n";
+  runs.push_back(broken);
+  try {
+    RunSurveys(runs, 2, callbacks_);
+    FAIL() << "a broken run passed";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::kBadInput);
+    EXPECT_EQ(
+        std::string(e.what()).rfind("1 of 4 runs failed (the others finished):\nweek4: survey "
+                                    "stage 'ingest' failed: ",
+                                    0),
+        0u)
+        << e.what();
+  }
+  EXPECT_THROW(RunSurveys(runs, 0, callbacks_), UsageError);
+  runs[1].name = "week3";
+  EXPECT_THROW(RunSurveys(runs, 2, callbacks_), UsageError);  // two runs named week3
 }
 
 }  // namespace
