@@ -9,10 +9,12 @@
 namespace littermap::heatmap {
 namespace {
 
-GridGeometry UnionGrid(const std::vector<db::CoverageRecord>& coverages, double cell_size_m) {
-  double min_x = coverages[0].min_x_m, max_y = coverages[0].max_y_m;
+GridGeometry UnionGrid(const std::vector<const db::CoverageRecord*>& coverages,
+                       double cell_size_m) {
+  double min_x = coverages[0]->min_x_m, max_y = coverages[0]->max_y_m;
   double max_x = min_x, min_y = max_y;
-  for (const db::CoverageRecord& c : coverages) {
+  for (const db::CoverageRecord* coverage : coverages) {
+    const db::CoverageRecord& c = *coverage;
     min_x = std::min(min_x, c.min_x_m);
     max_y = std::max(max_y, c.max_y_m);
     max_x = std::max(max_x, c.min_x_m + c.width * c.cell_size_m);
@@ -39,10 +41,10 @@ void AddRunEffort(Raster& effort, const db::CoverageRecord& coverage) {
 
 }  // namespace
 
-SiteHeatmap ComputeSiteHeatmap(db::SiteDatabase& site, const SiteHeatmapOptions& options) {
+SiteHeatmap ComputeSiteHeatmap(const SiteContents& site, const SiteHeatmapOptions& options) {
   if (!(options.cell_size_m > 0.0)) throw UsageError("heatmap: cell size must be > 0 m");
   std::set<std::int64_t> selected;
-  for (const db::RunRecord& run : site.Runs()) {
+  for (const db::RunRecord& run : site.runs) {
     if (options.from_time_s && run.start_time_s < *options.from_time_s) continue;
     if (options.to_time_s && run.start_time_s >= *options.to_time_s) continue;
     if (!options.run_ids.empty() && std::find(options.run_ids.begin(), options.run_ids.end(),
@@ -51,31 +53,48 @@ SiteHeatmap ComputeSiteHeatmap(db::SiteDatabase& site, const SiteHeatmapOptions&
     }
     selected.insert(run.run_id);
   }
-  std::vector<db::CoverageRecord> coverages = site.Coverages();
-  std::erase_if(coverages, [&](const auto& c) { return !selected.count(c.run_id); });
+  std::vector<const db::CoverageRecord*> coverages;
+  for (const db::CoverageRecord& coverage : site.coverages) {
+    if (selected.count(coverage.run_id)) coverages.push_back(&coverage);
+  }
   if (coverages.empty()) {
-    throw BadInputError(site.name() +
+    throw BadInputError(site.site_name +
                         ": no ingested run matches the selection (ingest runs first)");
   }
   SiteHeatmap heatmap;
   heatmap.run_ids.assign(selected.begin(), selected.end());
   heatmap.effort = Raster(UnionGrid(coverages, options.cell_size_m), 0.0f);
-  for (const db::CoverageRecord& coverage : coverages) AddRunEffort(heatmap.effort, coverage);
+  for (const db::CoverageRecord* coverage : coverages) AddRunEffort(heatmap.effort, *coverage);
 
   const auto wanted = [&](const std::string& class_name) {
     return options.class_name.empty() || class_name == options.class_name;
   };
-  heatmap.items = site.ItemsSeenBy(heatmap.run_ids);
-  std::erase_if(heatmap.items,
-                [&](const db::ItemRecord& item) { return !wanted(item.class_name); });
+  // The detections of the selected runs, run by run, and the distinct items they are.
+  std::set<std::int64_t> fids;
   std::vector<db::PointXY> crs_points;
-  for (const db::DetectionRecord& detection : site.Detections(heatmap.run_ids)) {
-    if (wanted(detection.class_name))
-      crs_points.push_back(site.site().frame.ToCrs(detection.site_xy));
+  for (const std::int64_t run_id : heatmap.run_ids) {
+    const auto range = site.detections_of_run.find(run_id);
+    if (range == site.detections_of_run.end()) continue;
+    for (std::size_t i = range->second.first; i < range->second.second; ++i) {
+      const db::DetectionRecord& detection = site.detections[i];
+      if (detection.item_fid) fids.insert(*detection.item_fid);
+      if (wanted(detection.class_name)) crs_points.push_back(site.frame.ToCrs(detection.site_xy));
+    }
+  }
+  for (const std::int64_t fid : fids) {
+    const auto item = site.item_index.find(fid);
+    if (item == site.item_index.end()) continue;
+    if (wanted(site.items[item->second].class_name)) {
+      heatmap.items.push_back(site.items[item->second]);
+    }
   }
   heatmap.detections = crs_points.size();
   heatmap.density = EffortNormalisedDensity(heatmap.effort, crs_points, options.density);
   return heatmap;
+}
+
+SiteHeatmap ComputeSiteHeatmap(db::SiteDatabase& site, const SiteHeatmapOptions& options) {
+  return ComputeSiteHeatmap(ReadSiteContents(site), options);
 }
 
 }  // namespace littermap::heatmap

@@ -14,6 +14,7 @@
 #include "db/site_database.hpp"
 #include "heatmap/density_map.hpp"
 #include "heatmap/raster.hpp"
+#include "heatmap/site_contents.hpp"
 
 namespace littermap::heatmap {
 
@@ -35,6 +36,8 @@ struct SiteHeatmap {
 };
 
 // Throws BadInputError when no run of the site matches the selection.
+SiteHeatmap ComputeSiteHeatmap(const SiteContents& site, const SiteHeatmapOptions& options);
+// The same, reading the site first.
 SiteHeatmap ComputeSiteHeatmap(db::SiteDatabase& site, const SiteHeatmapOptions& options);
 
 }  // namespace littermap::heatmap

@@ -20,8 +20,8 @@ double RunQuality::OdometryOnlyShare() const {
 
 namespace {
 
-std::vector<db::RunRecord> RunsByStartTime(db::SiteDatabase& site) {
-  std::vector<db::RunRecord> runs = site.Runs();
+std::vector<db::RunRecord> RunsByStartTime(const heatmap::SiteContents& site) {
+  std::vector<db::RunRecord> runs = site.runs;
   std::stable_sort(runs.begin(), runs.end(),
                    [](const auto& a, const auto& b) { return a.start_time_s < b.start_time_s; });
   return runs;
@@ -74,21 +74,21 @@ void AddRunWarnings(const SiteReportOptions& options, RunFigures& run) {
 
 // New, still there and gone per run, replaying every run of the site in start-time order (so
 // the runs before the period set the state the period starts from).
-void CountItemChanges(db::SiteDatabase& site, const std::vector<db::RunRecord>& all_runs,
-                      const std::vector<db::DetectionRecord>& detections,
-                      const std::unordered_map<std::int64_t, db::CoverageRecord>& coverage_by_run,
-                      std::vector<RunFigures>& figures) {
+void CountItemChanges(
+    const heatmap::SiteContents& site, const std::vector<db::RunRecord>& all_runs,
+    const std::vector<db::DetectionRecord>& detections,
+    const std::unordered_map<std::int64_t, const db::CoverageRecord*>& coverage_by_run,
+    std::vector<RunFigures>& figures) {
   std::unordered_map<std::int64_t, std::set<std::int64_t>> found_by_run;
   for (const db::DetectionRecord& d : detections) {
     if (d.item_fid) found_by_run[d.run_id].insert(*d.item_fid);
   }
-  const std::vector<db::ItemRecord> items = site.Items();
   std::unordered_map<std::int64_t, const db::ItemRecord*> item_by_fid;
-  for (const auto& item : items) item_by_fid[item.fid] = &item;
+  for (const auto& item : site.items) item_by_fid[item.fid] = &item;
 
   std::set<std::int64_t> known;    // seen by some earlier run
   std::set<std::int64_t> present;  // and not missed since
-  const db::SiteFrame& frame = site.site().frame;
+  const db::SiteFrame& frame = site.frame;
   for (const db::RunRecord& run : all_runs) {
     const std::set<std::int64_t>& found = found_by_run[run.run_id];
     RunFigures* out = nullptr;
@@ -98,7 +98,7 @@ void CountItemChanges(db::SiteDatabase& site, const std::vector<db::RunRecord>& 
     const auto coverage = coverage_by_run.find(run.run_id);
     for (auto it = present.begin(); it != present.end();) {
       const bool looked = coverage != coverage_by_run.end() &&
-                          coverage->second.Covers(frame.ToCrs(item_by_fid.at(*it)->site_xy));
+                          coverage->second->Covers(frame.ToCrs(item_by_fid.at(*it)->site_xy));
       if (looked && !found.count(*it)) {
         if (out) ++out->items_gone;
         it = present.erase(it);
@@ -155,7 +155,8 @@ SiteReport BuildSiteReport(db::SiteDatabase& site, const SiteReportOptions& opti
   heatmap_options.to_time_s = options.to_time_s;
   heatmap_options.class_name.clear();
   heatmap_options.run_ids.clear();
-  report.heatmap = heatmap::ComputeSiteHeatmap(site, heatmap_options);
+  const heatmap::SiteContents contents = heatmap::ReadSiteContents(site);
+  report.heatmap = heatmap::ComputeSiteHeatmap(contents, heatmap_options);
   const heatmap::SiteHeatmap& map = report.heatmap;
   report.items = map.items.size();
   report.detections = map.detections;
@@ -167,12 +168,10 @@ SiteReport BuildSiteReport(db::SiteDatabase& site, const SiteReportOptions& opti
   report.site_map = site.SiteMap();
 
   // Every run of the site, read once: the runs before the period set the state it starts from.
-  const std::vector<db::RunRecord> all_runs = RunsByStartTime(site);
-  std::vector<std::int64_t> all_ids;
-  for (const db::RunRecord& run : all_runs) all_ids.push_back(run.run_id);
-  const std::vector<db::DetectionRecord> detections = site.Detections(all_ids);
-  std::unordered_map<std::int64_t, db::CoverageRecord> coverage_by_run;
-  for (db::CoverageRecord& c : site.Coverages()) coverage_by_run[c.run_id] = std::move(c);
+  const std::vector<db::RunRecord> all_runs = RunsByStartTime(contents);
+  const std::vector<db::DetectionRecord>& detections = contents.detections;
+  std::unordered_map<std::int64_t, const db::CoverageRecord*> coverage_by_run;
+  for (const db::CoverageRecord& c : contents.coverages) coverage_by_run[c.run_id] = &c;
   std::unordered_map<std::int64_t, std::size_t> detections_by_run;
   for (const db::DetectionRecord& d : detections) ++detections_by_run[d.run_id];
   // The period's runs are those the heatmap selected.
@@ -187,7 +186,7 @@ SiteReport BuildSiteReport(db::SiteDatabase& site, const SiteReportOptions& opti
     f.length_m = run.length_m;
     const auto coverage = coverage_by_run.find(run.run_id);
     f.observed_area_m2 =
-        coverage == coverage_by_run.end() ? 0.0 : coverage->second.observed_area_m2;
+        coverage == coverage_by_run.end() ? 0.0 : coverage->second->observed_area_m2;
     f.coverage_fraction = report.surveyed_area_m2 > 0
                               ? std::min(1.0, f.observed_area_m2 / report.surveyed_area_m2)
                               : 0.0;
@@ -196,7 +195,7 @@ SiteReport BuildSiteReport(db::SiteDatabase& site, const SiteReportOptions& opti
     f.quality = ParseQuality(run, f.warnings);
     report.length_m += f.length_m;
   }
-  CountItemChanges(site, all_runs, detections, coverage_by_run, report.runs);
+  CountItemChanges(contents, all_runs, detections, coverage_by_run, report.runs);
   for (RunFigures& f : report.runs) {
     f.items_per_100m2 = f.observed_area_m2 > 0
                             ? 100.0 * static_cast<double>(f.items_found) / f.observed_area_m2
@@ -221,7 +220,7 @@ SiteReport BuildSiteReport(db::SiteDatabase& site, const SiteReportOptions& opti
   for (const RunFigures& run : report.runs) {
     heatmap::SiteHeatmapOptions one_run = heatmap_options;
     one_run.run_ids = {run.run_id};
-    run_density.push_back(heatmap::ComputeSiteHeatmap(site, one_run).density.density);
+    run_density.push_back(heatmap::ComputeSiteHeatmap(contents, one_run).density.density);
   }
   std::unique_ptr<heatmap::Wgs84Transform> wgs84;
   if (report.frame.georeferenced()) {

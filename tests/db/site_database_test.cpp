@@ -9,23 +9,14 @@
 #include "core/error.hpp"
 #include "db/geopackage_schema.hpp"
 #include "db/site_migrations.hpp"
+#include "support/site_options.hpp"
 #include "support/temp_dir.hpp"
 
 namespace littermap::db {
 namespace {
 
+using littermap::test::SiteOptionsOf;
 using littermap::test::TempDir;
-
-SiteOptions Options(const std::string& name, std::optional<int> epsg = std::nullopt,
-                    double easting = 0, double northing = 0, double rotation_deg = 0) {
-  SiteOptions options;
-  options.name = name;
-  options.epsg_code = epsg;
-  options.origin_easting_m = easting;
-  options.origin_northing_m = northing;
-  options.rotation_deg = rotation_deg;
-  return options;
-}
 
 std::string Text(SqliteDatabase& database, const std::string& sql) {
   SqliteStatement query = database.Prepare(sql);
@@ -39,7 +30,7 @@ std::int64_t Integer(SqliteDatabase& database, const std::string& sql) {
 
 TEST(SiteDatabase, LocalSiteIsAValidGeoPackage) {
   TempDir dir;
-  SiteDatabase site = SiteDatabase::Create(dir / "park.gpkg", Options("North park"));
+  SiteDatabase site = SiteDatabase::Create(dir / "park.gpkg", SiteOptionsOf("North park"));
   SqliteDatabase& sql = site.sqlite();
   EXPECT_EQ(Integer(sql, "PRAGMA application_id"), 0x47504B47);
   EXPECT_EQ(Integer(sql, "PRAGMA user_version"), 10300);  // GeoPackage 1.3
@@ -73,7 +64,7 @@ TEST(SiteDatabase, LocalSiteIsAValidGeoPackage) {
 TEST(SiteDatabase, EpsgSiteCarriesProjDefinition) {
   TempDir dir;
   SiteDatabase site =
-      SiteDatabase::Create(dir / "park.gpkg", Options("Madison", 32616, 305000, 4770000, 90));
+      SiteDatabase::Create(dir / "park.gpkg", SiteOptionsOf("Madison", 32616, 305000, 4770000, 90));
   const std::string definition =
       Text(site.sqlite(), "SELECT definition FROM gpkg_spatial_ref_sys WHERE srs_id = 32616");
   EXPECT_EQ(definition.rfind("PROJCS[\"WGS 84 / UTM zone 16N\"", 0), 0u) << definition;
@@ -86,9 +77,9 @@ TEST(SiteDatabase, EpsgSiteCarriesProjDefinition) {
 
 TEST(SiteDatabase, RefusesUnusableCrsAndLeavesNoFile) {
   TempDir dir;
-  EXPECT_THROW(SiteDatabase::Create(dir / "a.gpkg", Options("a", 4326)), UsageError);
-  EXPECT_THROW(SiteDatabase::Create(dir / "a.gpkg", Options("a", 999999)), UsageError);
-  EXPECT_THROW(SiteDatabase::Create(dir / "a.gpkg", Options("a", std::nullopt, 0, 0, 5)),
+  EXPECT_THROW(SiteDatabase::Create(dir / "a.gpkg", SiteOptionsOf("a", 4326)), UsageError);
+  EXPECT_THROW(SiteDatabase::Create(dir / "a.gpkg", SiteOptionsOf("a", 999999)), UsageError);
+  EXPECT_THROW(SiteDatabase::Create(dir / "a.gpkg", SiteOptionsOf("a", std::nullopt, 0, 0, 5)),
                UsageError);
   EXPECT_FALSE(std::filesystem::exists(dir / "a.gpkg"));
 }
@@ -97,7 +88,7 @@ TEST(SiteDatabase, ReopensWithRecordsAndGeometryInTheSiteCrs) {
   TempDir dir;
   const auto file = dir / "park.gpkg";
   {
-    SiteDatabase site = SiteDatabase::Create(file, Options("p", 32633, 500000, 5000000, 30));
+    SiteDatabase site = SiteDatabase::Create(file, SiteOptionsOf("p", 32633, 500000, 5000000, 30));
     site.InTransaction([&] {
       const std::int64_t run =
           site.AddRun({0, "run1", "digest-1", 0, 900, 120, {}, std::nullopt, {}});
@@ -139,7 +130,7 @@ TEST(SiteDatabase, ReopensWithRecordsAndGeometryInTheSiteCrs) {
 
 TEST(SiteDatabase, ASiteMissingATableOrColumnIsRefusedWhenOpened) {
   TempDir dir;
-  { SiteDatabase::Create(dir / "park.gpkg", Options("North park")); }
+  { SiteDatabase::Create(dir / "park.gpkg", SiteOptionsOf("North park")); }
   {
     SqliteDatabase raw(dir / "park.gpkg", SqliteDatabase::Mode::kReadWrite);
     raw.Execute("ALTER TABLE runs DROP COLUMN reconstruction_quality");
@@ -156,19 +147,21 @@ TEST(SiteDatabase, ASiteMissingATableOrColumnIsRefusedWhenOpened) {
 
 TEST(SiteDatabase, OutOfRangeOriginsAndNamesThatAreNotUtf8AreRefused) {
   TempDir dir;
-  EXPECT_THROW(SiteDatabase::Create(dir / "a.gpkg", Options("a", 32632, 9e8, 9e8, 0)), UsageError);
-  EXPECT_THROW(SiteDatabase::Create(dir / "b.gpkg", Options("b", 32632, NAN, 5334000, 0)),
+  EXPECT_THROW(SiteDatabase::Create(dir / "a.gpkg", SiteOptionsOf("a", 32632, 9e8, 9e8, 0)),
+               UsageError);
+  EXPECT_THROW(SiteDatabase::Create(dir / "b.gpkg", SiteOptionsOf("b", 32632, NAN, 5334000, 0)),
                UsageError);
   EXPECT_THROW(
-      SiteDatabase::Create(dir / "c.gpkg", Options("Park \xC3", 32632, 691000, 5334000, 0)),
+      SiteDatabase::Create(dir / "c.gpkg", SiteOptionsOf("Park \xC3", 32632, 691000, 5334000, 0)),
       BadInputError);
   EXPECT_FALSE(std::filesystem::exists(dir / "a.gpkg"));
-  EXPECT_NO_THROW(SiteDatabase::Create(dir / "d.gpkg", Options("d", 32632, 691000, 5334000, 0)));
+  EXPECT_NO_THROW(
+      SiteDatabase::Create(dir / "d.gpkg", SiteOptionsOf("d", 32632, 691000, 5334000, 0)));
 }
 
 TEST(SiteDatabase, ForeignKeysAreEnforced) {
   TempDir dir;
-  SiteDatabase site = SiteDatabase::Create(dir / "park.gpkg", Options("p"));
+  SiteDatabase site = SiteDatabase::Create(dir / "park.gpkg", SiteOptionsOf("p"));
   EXPECT_THROW(site.AddItem({0, "can", {1, 1}, 0, 0.1, 1, 42, 42, 1}), SqliteError);
 }
 
@@ -206,14 +199,14 @@ TEST(SiteDatabase, RefusesFilesThatAreNotSiteGeoPackages) {
         << e.what();
   }
   EXPECT_THROW(SiteDatabase::Open(dir / "missing.gpkg"), BadInputError);
-  EXPECT_THROW(SiteDatabase::Create(bare, Options("x")), UsageError);  // exists
+  EXPECT_THROW(SiteDatabase::Create(bare, SiteOptionsOf("x")), UsageError);  // exists
 }
 
 TEST(SiteDatabase, RefusesASchemaFromTheFuture) {
   TempDir dir;
   const auto file = dir / "park.gpkg";
   {
-    SiteDatabase site = SiteDatabase::Create(file, Options("p"));
+    SiteDatabase site = SiteDatabase::Create(file, SiteOptionsOf("p"));
     site.sqlite().Execute(
         "INSERT INTO littermap_schema_version (version, description) "
         "VALUES (999, 'future')");
@@ -230,7 +223,7 @@ TEST(SiteDatabase, KeepsTheSiteMapAndWhereEachRunWasPlaced) {
   TempDir dir;
   const auto file = dir / "park.gpkg";
   {
-    SiteDatabase site = SiteDatabase::Create(file, Options("p"));
+    SiteDatabase site = SiteDatabase::Create(file, SiteOptionsOf("p"));
     RunRecord first{0, "first", "digest-1", 0, 10, 5, {}, std::nullopt, {}};
     RunRecord second{0, "second", "digest-2", 20, 30, 5, {1.5, -2.0, 0.25}, 0.87, {}};
     const std::int64_t first_id = site.AddRun(first);
@@ -270,7 +263,7 @@ TEST(SiteDatabase, AVersionOneSiteIsMigratedOnOpen) {
   TempDir dir;
   const auto file = dir / "park.gpkg";
   {
-    SiteDatabase site = SiteDatabase::Create(file, Options("p"));
+    SiteDatabase site = SiteDatabase::Create(file, SiteOptionsOf("p"));
     const std::int64_t run_id =
         site.AddRun({0, "week 1", "d1", 1795000000.0, 1795000600.0, 3, {}, std::nullopt, ""});
     const PointXY track[] = {{0, 0}, {3, 0}};

@@ -9,25 +9,16 @@
 #include "db/postgres_connection.hpp"
 #include "db/site_database.hpp"
 #include "support/site_engines.hpp"
+#include "support/site_options.hpp"
 #include "support/temp_dir.hpp"
 
 namespace littermap::db {
 namespace {
 
 using littermap::test::SiteEngine;
+using littermap::test::SiteOptionsOf;
 using littermap::test::TempDir;
 using littermap::test::TestSite;
-
-SiteOptions Options(const std::string& name, std::optional<int> epsg = std::nullopt,
-                    double easting = 0, double northing = 0, double rotation_deg = 0) {
-  SiteOptions options;
-  options.name = name;
-  options.epsg_code = epsg;
-  options.origin_easting_m = easting;
-  options.origin_northing_m = northing;
-  options.rotation_deg = rotation_deg;
-  return options;
-}
 
 std::string Text(SqlConnection& connection, const std::string& sql) {
   const auto query = connection.Prepare(sql);
@@ -47,8 +38,8 @@ INSTANTIATE_TEST_SUITE_P(Engines, SiteEnginesTest,
 TEST_P(SiteEnginesTest, EveryRecordReadsBackAsWritten) {
   std::int64_t run_id = 0, fid = 0;
   {
-    SiteDatabase site =
-        SiteDatabase::Create(where_.locator(), Options("Park \xC3\xA9", 32633, 500000, 5e6, 30));
+    SiteDatabase site = SiteDatabase::Create(
+        where_.locator(), SiteOptionsOf("Park \xC3\xA9", 32633, 500000, 5e6, 30));
     site.InTransaction([&] {
       run_id = site.AddRun({0,
                             "week 1",
@@ -140,7 +131,7 @@ TEST_P(SiteEnginesTest, EveryRecordReadsBackAsWritten) {
 }
 
 TEST_P(SiteEnginesTest, ALocalSiteHasNoCrs) {
-  SiteDatabase::Create(where_.locator(), Options("Local"));
+  SiteDatabase::Create(where_.locator(), SiteOptionsOf("Local"));
   SiteDatabase site = SiteDatabase::Open(where_.locator());
   EXPECT_FALSE(site.site().frame.georeferenced());
   const std::int64_t run = site.AddRun({0, "r", "d", 0, 1, 1, {}, std::nullopt, {}});
@@ -161,10 +152,10 @@ TEST_P(SiteEnginesTest, ASiteIsCreatedOnceAndOpenedOnlyWhenThere) {
     EXPECT_NE(std::string(e.what()).find(where_.locator().display), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("site init"), std::string::npos) << e.what();
   }
-  SiteDatabase::Create(where_.locator(), Options("p"));
+  SiteDatabase::Create(where_.locator(), SiteOptionsOf("p"));
   EXPECT_TRUE(SiteDatabase::Exists(where_.locator()));
   try {
-    SiteDatabase::Create(where_.locator(), Options("p"));
+    SiteDatabase::Create(where_.locator(), SiteOptionsOf("p"));
     FAIL() << "created twice";
   } catch (const UsageError& e) {
     EXPECT_EQ(std::string(e.what()),
@@ -172,13 +163,13 @@ TEST_P(SiteEnginesTest, ASiteIsCreatedOnceAndOpenedOnlyWhenThere) {
   }
   // A refused CRS leaves nothing behind.
   TestSite other(GetParam(), dir_.path(), "other");
-  EXPECT_THROW(SiteDatabase::Create(other.locator(), Options("o", 4326)), UsageError);
+  EXPECT_THROW(SiteDatabase::Create(other.locator(), SiteOptionsOf("o", 4326)), UsageError);
   EXPECT_FALSE(SiteDatabase::Exists(other.locator()));
 }
 
 TEST_P(SiteEnginesTest, AColumnMissingIsNamedWhenOpened) {
   {
-    SiteDatabase site = SiteDatabase::Create(where_.locator(), Options("p"));
+    SiteDatabase site = SiteDatabase::Create(where_.locator(), SiteOptionsOf("p"));
     site.sql().Execute("ALTER TABLE detections DROP COLUMN confidence");
   }
   try {
@@ -193,7 +184,7 @@ TEST_P(SiteEnginesTest, AColumnMissingIsNamedWhenOpened) {
 }
 
 TEST_P(SiteEnginesTest, AFailedTransactionLeavesNothing) {
-  SiteDatabase site = SiteDatabase::Create(where_.locator(), Options("p"));
+  SiteDatabase site = SiteDatabase::Create(where_.locator(), SiteOptionsOf("p"));
   EXPECT_THROW(site.InTransaction([&] {
     site.AddRun({0, "r", "d", 0, 1, 1, {}, std::nullopt, {}});
     throw BadInputError("stop");
@@ -215,7 +206,7 @@ TEST(PostgisSite, AnOlderSiteIsMigratedOnOpen) {
   TempDir dir;
   TestSite where(SiteEngine::kPostgis, dir.path(), "v4");
   {
-    SiteDatabase site = SiteDatabase::Create(where.locator(), Options("p"));
+    SiteDatabase site = SiteDatabase::Create(where.locator(), SiteOptionsOf("p"));
     site.sql().Execute("DROP INDEX litter_items_site_x_m_site_y_m");
     site.sql().Execute("UPDATE littermap_schema_version SET version = 4");
   }
