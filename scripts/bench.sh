@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs every benchmark binary pinned to one core and prints its table; capture_bench, which
 # measures the recorder's threads working together, runs on all cores; site_scale_bench gets the
-# PostGIS server of the tests (BUILD_DIR/postgis), started for it and stopped after.
+# PostGIS server of the tests (BUILD_DIR/postgis), started for it and deleted after.
 #   scripts/bench.sh BUILD_DIR
 set -euo pipefail
 build=$1
@@ -14,7 +14,7 @@ for bench in "$build"/bench/*_bench; do
   elif [[ $(basename "$bench") == site_scale_bench ]]; then
     url=$("$(dirname "$0")/postgis.sh" start "$build/postgis")
     "${pin[@]}" "$bench" --postgis "$url"
-    "$(dirname "$0")/postgis.sh" stop "$build/postgis"
+    "$(dirname "$0")/postgis.sh" destroy "$build/postgis"
   else
     "${pin[@]}" "$bench" --benchmark_counters_tabular=true
   fi

@@ -4,6 +4,7 @@
 #                                               the URL to give littermap (also in DIR/url;
 #                                               --port: default a free one, then the same)
 #   scripts/postgis.sh stop [DIR]
+#   scripts/postgis.sh destroy [DIR]            stop it and delete the cluster (every site in it)
 #   scripts/postgis.sh status [DIR]
 #   scripts/postgis.sh url [DIR]                the URL of the running server
 # DIR defaults to $LITTERMAP_POSTGIS_DIR, else ~/.local/share/littermap/postgis. The server
@@ -111,6 +112,13 @@ case $command in
       rm -f "$dir/url"
     fi
     ;;
+  destroy)
+    if running; then
+      run "$bin/pg_ctl" -D "$data" -m fast -w stop >/dev/null
+    fi
+    rm -rf "$data" "$cluster/initdb.log" "$cluster/server.log" "$dir/url"
+    if [[ $cluster != "$dir" ]]; then rmdir "$cluster" 2>/dev/null || true; fi
+    ;;
   status)
     if running; then
       echo "running: $(url)"
@@ -127,7 +135,7 @@ case $command in
     url
     ;;
   *)
-    sed -n '2,13s/^# \{0,1\}//p' "$0" >&2
+    sed -n '2,14s/^# \{0,1\}//p' "$0" >&2
     exit 2
     ;;
 esac
