@@ -94,7 +94,13 @@ class PostgresStatement : public SqlStatement {
     return value;
   }
   double ColumnDouble(int column) const override {
-    return ColumnIsNull(column) ? 0.0 : std::strtod(Value(column), nullptr);
+    if (ColumnIsNull(column)) return 0.0;
+    // from_chars, not strtod: the text is PostgreSQL's ("0.5", "Infinity", "NaN") whatever the
+    // process's locale says a decimal point is.
+    const char* text = Value(column);
+    double value = 0.0;
+    std::from_chars(text, text + std::char_traits<char>::length(text), value);
+    return value;
   }
   bool ColumnIsNull(int column) const override { return PQgetisnull(result_, row_, column) != 0; }
   std::string ColumnText(int column) const override { return Value(column); }

@@ -5,6 +5,7 @@
 #include <memory>
 #include <set>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 #include "core/error.hpp"
@@ -86,8 +87,23 @@ void CountItemChanges(
   std::unordered_map<std::int64_t, const db::ItemRecord*> item_by_fid;
   for (const auto& item : site.items) item_by_fid[item.fid] = &item;
 
-  std::set<std::int64_t> known;    // seen by some earlier run
-  std::set<std::int64_t> present;  // and not missed since
+  // Items present (seen, and not missed since) by 16 m square of the site CRS, so a run looks
+  // only at those under its coverage: a site of years holds a million.
+  constexpr double kSquareM = 16.0;
+  const auto square = [](double x, double y) {
+    return std::pair(static_cast<std::int64_t>(std::floor(x / kSquareM)),
+                     static_cast<std::int64_t>(std::floor(y / kSquareM)));
+  };
+  const auto key = [](std::int64_t sx, std::int64_t sy) {
+    return (sx * 73856093) ^ (sy * 19349663);
+  };
+  struct Present {
+    std::int64_t fid;
+    db::PointXY crs;
+  };
+  std::unordered_map<std::int64_t, std::vector<Present>> present_by_square;
+  std::unordered_set<std::int64_t> present;
+  std::unordered_set<std::int64_t> known;  // seen by some earlier run
   const db::SiteFrame& frame = site.frame;
   for (const db::RunRecord& run : all_runs) {
     const std::set<std::int64_t>& found = found_by_run[run.run_id];
@@ -96,24 +112,41 @@ void CountItemChanges(
       if (f.run_id == run.run_id) out = &f;
     }
     const auto coverage = coverage_by_run.find(run.run_id);
-    for (auto it = present.begin(); it != present.end();) {
-      const bool looked = coverage != coverage_by_run.end() &&
-                          coverage->second->Covers(frame.ToCrs(item_by_fid.at(*it)->site_xy));
-      if (looked && !found.count(*it)) {
-        if (out) ++out->items_gone;
-        it = present.erase(it);
-      } else {
-        ++it;
+    if (coverage != coverage_by_run.end()) {
+      const db::CoverageRecord& c = *coverage->second;
+      const auto [x0, y0] = square(c.min_x_m, c.max_y_m - c.height * c.cell_size_m);
+      const auto [x1, y1] = square(c.min_x_m + c.width * c.cell_size_m, c.max_y_m);
+      for (std::int64_t sx = x0; sx <= x1; ++sx) {
+        for (std::int64_t sy = y0; sy <= y1; ++sy) {
+          const auto cell = present_by_square.find(key(sx, sy));
+          if (cell == present_by_square.end()) continue;
+          std::vector<Present>& items = cell->second;
+          for (std::size_t i = 0; i < items.size();) {
+            if (square(items[i].crs.x, items[i].crs.y) == std::pair(sx, sy) &&
+                c.Covers(items[i].crs) && !found.count(items[i].fid)) {
+              if (out) ++out->items_gone;
+              present.erase(items[i].fid);
+              items[i] = items.back();
+              items.pop_back();
+            } else {
+              ++i;
+            }
+          }
+        }
       }
     }
     for (const std::int64_t fid : found) {
+      const auto item = item_by_fid.find(fid);
       if (out) {
         ++(known.count(fid) ? out->items_still_there : out->new_items);
-        const auto item = item_by_fid.find(fid);
         if (item != item_by_fid.end()) ++out->items_by_class[item->second->class_name];
       }
       known.insert(fid);
-      present.insert(fid);
+      if (item != item_by_fid.end() && present.insert(fid).second) {
+        const db::PointXY crs = frame.ToCrs(item->second->site_xy);
+        const auto [sx, sy] = square(crs.x, crs.y);
+        present_by_square[key(sx, sy)].push_back({fid, crs});
+      }
     }
     if (out) out->items_found = found.size();
   }
