@@ -1,5 +1,6 @@
 // SiteDatabase's typed access to detections, coverage and hotspots.
 
+#include <algorithm>
 #include <set>
 #include <string>
 
@@ -47,27 +48,46 @@ std::size_t SiteDatabase::DetectionCount(std::int64_t run_id) {
   return query->Step() ? static_cast<std::size_t>(query->ColumnInt64(0)) : 0;
 }
 
+namespace {
+
+constexpr const char* kDetectionColumns =
+    "SELECT run_id, item_fid, run_item_id, class, site_x_m, site_y_m, z_m, size_m, confidence "
+    "FROM detections ";
+
+DetectionRecord ReadDetection(const SqlStatement& query) {
+  DetectionRecord detection;
+  detection.run_id = query.ColumnInt64(0);
+  if (!query.ColumnIsNull(1)) detection.item_fid = query.ColumnInt64(1);
+  detection.run_item_id = query.ColumnText(2);
+  detection.class_name = query.ColumnText(3);
+  detection.site_xy = {query.ColumnDouble(4), query.ColumnDouble(5)};
+  detection.z_m = query.ColumnDouble(6);
+  detection.size_m = query.ColumnDouble(7);
+  detection.confidence = query.ColumnDouble(8);
+  return detection;
+}
+
+}  // namespace
+
 std::vector<DetectionRecord> SiteDatabase::Detections(const std::vector<std::int64_t>& run_ids) {
-  const auto query = connection_->Prepare(
-      "SELECT item_fid, run_item_id, class, site_x_m, site_y_m, z_m, size_m, confidence "
-      "FROM detections WHERE run_id = ? ORDER BY detection_id");
+  const auto query = connection_->Prepare(std::string(kDetectionColumns) +
+                                          "WHERE run_id = ? ORDER BY detection_id");
   std::vector<DetectionRecord> detections;
   for (std::int64_t run_id : run_ids) {
     query->Bind(1, run_id);
-    while (query->Step()) {
-      DetectionRecord detection;
-      detection.run_id = run_id;
-      if (!query->ColumnIsNull(0)) detection.item_fid = query->ColumnInt64(0);
-      detection.run_item_id = query->ColumnText(1);
-      detection.class_name = query->ColumnText(2);
-      detection.site_xy = {query->ColumnDouble(3), query->ColumnDouble(4)};
-      detection.z_m = query->ColumnDouble(5);
-      detection.size_m = query->ColumnDouble(6);
-      detection.confidence = query->ColumnDouble(7);
-      detections.push_back(std::move(detection));
-    }
+    while (query->Step()) detections.push_back(ReadDetection(*query));
     query->Reset();
   }
+  return detections;
+}
+
+std::vector<DetectionRecord> SiteDatabase::AllDetections() {
+  // In the order stored, then by run: no sort of the whole table in the database.
+  const auto query = connection_->Prepare(std::string(kDetectionColumns) + "ORDER BY detection_id");
+  std::vector<DetectionRecord> detections;
+  while (query->Step()) detections.push_back(ReadDetection(*query));
+  std::stable_sort(detections.begin(), detections.end(),
+                   [](const auto& a, const auto& b) { return a.run_id < b.run_id; });
   return detections;
 }
 

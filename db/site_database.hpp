@@ -185,6 +185,8 @@ class SiteDatabase {
   std::size_t DetectionCount(std::int64_t run_id);
   // The detections of these runs, in run order.
   std::vector<DetectionRecord> Detections(const std::vector<std::int64_t>& run_ids);
+  // Every detection, by run id, each run's in the order stored.
+  std::vector<DetectionRecord> AllDetections();
   // The items detected by any of these runs.
   std::vector<ItemRecord> ItemsSeenBy(const std::vector<std::int64_t>& run_ids);
   void AddCoverage(const CoverageRecord& coverage);

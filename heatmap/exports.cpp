@@ -1,5 +1,6 @@
 #include "heatmap/exports.hpp"
 
+#include <charconv>
 #include <cstdio>
 #include <string>
 #include <string_view>
@@ -10,11 +11,17 @@
 namespace littermap::heatmap {
 namespace {
 
-// Formats one or two numbers (b is ignored by a one-number format).
-std::string Format(const char* format, double a, double b) {
-  char text[96];
-  std::snprintf(text, sizeof(text), format, a, b);
-  return text;
+// `value` with `digits` decimals, as %.Nf writes it (both round the exact binary value), without
+// printf's format parsing: the item exports write millions of numbers.
+std::string Fixed(double value, int digits) {
+  char text[400];
+  const auto result =
+      std::to_chars(text, text + sizeof text, value, std::chars_format::fixed, digits);
+  return std::string(text, result.ptr);
+}
+
+std::string Fixed(double a, double b, int digits) {
+  return Fixed(a, digits) + ',' + Fixed(b, digits);
 }
 
 // A JSON string literal (class names come from files).
@@ -53,7 +60,7 @@ std::string CsvField(const std::string& text) {
 std::string LonLatColumns(const Wgs84Transform* wgs84, const db::PointXY& crs) {
   if (wgs84 == nullptr) return ",";
   const LonLat ll = (*wgs84)(crs);
-  return Format("%.8f,%.8f", ll.lon_deg, ll.lat_deg);
+  return Fixed(ll.lon_deg, ll.lat_deg, 8);
 }
 
 }  // namespace
@@ -67,10 +74,9 @@ void WriteItemsCsv(const std::filesystem::path& file, std::span<const db::ItemRe
   for (const db::ItemRecord& item : items) {
     const db::PointXY crs = frame.ToCrs(item.site_xy);
     out << item.fid << ',' << CsvField(item.class_name) << ','
-        << Format("%.3f,%.3f", item.site_xy.x, item.site_xy.y) << ','
-        << Format("%.3f,%.3f", crs.x, crs.y) << ',' << LonLatColumns(wgs84, crs) << ','
-        << Format("%.3f,%.3f", item.size_m, item.confidence) << ',' << item.first_run_id << ','
-        << item.last_run_id << ',' << item.times_seen << '\n';
+        << Fixed(item.site_xy.x, item.site_xy.y, 3) << ',' << Fixed(crs.x, crs.y, 3) << ','
+        << LonLatColumns(wgs84, crs) << ',' << Fixed(item.size_m, item.confidence, 3) << ','
+        << item.first_run_id << ',' << item.last_run_id << ',' << item.times_seen << '\n';
   }
   output.Commit();
 }
@@ -84,10 +90,10 @@ void WriteItemsGeoJson(const std::filesystem::path& file, std::span<const db::It
     const db::ItemRecord& item = items[i];
     const LonLat ll = wgs84(frame.ToCrs(item.site_xy));
     out << (i ? ",\n" : "\n") << "{\"type\":\"Feature\",\"id\":" << item.fid
-        << ",\"geometry\":{\"type\":\"Point\",\"coordinates\":["
-        << Format("%.8f,%.8f", ll.lon_deg, ll.lat_deg)
+        << ",\"geometry\":{\"type\":\"Point\",\"coordinates\":[" << Fixed(ll.lon_deg, ll.lat_deg, 8)
         << "]},\"properties\":{\"class\":" << JsonString(item.class_name)
-        << Format(",\"size_m\":%.3f,\"confidence\":%.3f", item.size_m, item.confidence)
+        << ",\"size_m\":" << Fixed(item.size_m, 3)
+        << ",\"confidence\":" << Fixed(item.confidence, 3)
         << ",\"first_run_id\":" << item.first_run_id << ",\"last_run_id\":" << item.last_run_id
         << ",\"times_seen\":" << item.times_seen << "}}";
   }
@@ -103,11 +109,10 @@ void WriteHotspotsCsv(const std::filesystem::path& file, std::span<const Hotspot
          "dominant_class,items_nearby\n";
   for (const Hotspot& hotspot : hotspots) {
     const db::PointXY site = frame.FromCrs(hotspot.crs);
-    out << hotspot.rank << ',' << Format("%.3f,%.3f", site.x, site.y) << ','
-        << Format("%.3f,%.3f", hotspot.crs.x, hotspot.crs.y) << ','
-        << LonLatColumns(wgs84, hotspot.crs) << ','
-        << Format("%.4f", hotspot.density_per_100m2, 0.0) << ',' << CsvField(hotspot.dominant_class)
-        << ',' << hotspot.items_nearby() << '\n';
+    out << hotspot.rank << ',' << Fixed(site.x, site.y, 3) << ','
+        << Fixed(hotspot.crs.x, hotspot.crs.y, 3) << ',' << LonLatColumns(wgs84, hotspot.crs) << ','
+        << Fixed(hotspot.density_per_100m2, 4) << ',' << CsvField(hotspot.dominant_class) << ','
+        << hotspot.items_nearby() << '\n';
   }
   output.Commit();
 }

@@ -9,9 +9,7 @@ SiteContents ReadSiteContents(db::SiteDatabase& site) {
   contents.runs = site.Runs();
   contents.coverages = site.Coverages();
   contents.items = site.Items();
-  std::vector<std::int64_t> run_ids;
-  for (const db::RunRecord& run : contents.runs) run_ids.push_back(run.run_id);
-  contents.detections = site.Detections(run_ids);
+  contents.detections = site.AllDetections();
   for (std::size_t i = 0; i < contents.items.size(); ++i) {
     contents.item_index[contents.items[i].fid] = i;
   }

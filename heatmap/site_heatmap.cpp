@@ -70,17 +70,19 @@ SiteHeatmap ComputeSiteHeatmap(const SiteContents& site, const SiteHeatmapOption
     return options.class_name.empty() || class_name == options.class_name;
   };
   // The detections of the selected runs, run by run, and the distinct items they are.
-  std::set<std::int64_t> fids;
+  std::vector<std::int64_t> fids;
   std::vector<db::PointXY> crs_points;
   for (const std::int64_t run_id : heatmap.run_ids) {
     const auto range = site.detections_of_run.find(run_id);
     if (range == site.detections_of_run.end()) continue;
     for (std::size_t i = range->second.first; i < range->second.second; ++i) {
       const db::DetectionRecord& detection = site.detections[i];
-      if (detection.item_fid) fids.insert(*detection.item_fid);
+      if (detection.item_fid) fids.push_back(*detection.item_fid);
       if (wanted(detection.class_name)) crs_points.push_back(site.frame.ToCrs(detection.site_xy));
     }
   }
+  std::sort(fids.begin(), fids.end());
+  fids.erase(std::unique(fids.begin(), fids.end()), fids.end());
   for (const std::int64_t fid : fids) {
     const auto item = site.item_index.find(fid);
     if (item == site.item_index.end()) continue;
