@@ -2,7 +2,9 @@
 // one site, then the three things a new survey does to it, timed: ingest the next run, heatmap,
 // report. Goal (issue 34): each within 2 s / 10 s / 10 s on one core, PostGIS and GeoPackage
 // side by side.
-//   site_scale_bench [--runs N] [--items-per-run N] [--postgis URL] [--keep DIR]
+//   site_scale_bench [--runs N] [--items-per-run N] [--postgis URL] [--keep DIR [--reuse]]
+// --keep keeps the sites (DIR/scale.gpkg, schema scale_bench); --reuse times the three steps on
+// the sites kept before instead of building them again (each time one more run is ingested).
 // The park is 1,000 m x N m: run r drives east along y = r + 0.5 m at 0.5 m/s (2 poses a second)
 // and finds items on a 1 m lattice half a metre to its left, so no item is another's (the
 // same-item radius is 0.75 m) and the site ends with runs x items-per-run items. The next run
@@ -57,10 +59,32 @@ struct Column {
   std::size_t items = 0;
 };
 
+// Ingests one more run (row N/2 again) into the site and times it, the heatmap and the report.
+Column MeasureNextRun(Column column, const db::SiteLocator& where, int runs, int items,
+                      const fs::path& dir) {
+  db::SiteDatabase site = db::SiteDatabase::Open(where);
+  const int next = static_cast<int>(site.Runs().size());
+  column.ingest_s = Seconds([&] { site::IngestRun(site, Row(runs / 2, items, next), {}); });
+  column.heatmap_s = Seconds([&] {
+    heatmap::HeatmapFilesOptions heatmap;
+    heatmap.force_output = true;
+    heatmap::WriteHeatmapFiles(site, dir / (column.engine + "-maps"), heatmap);
+  });
+  column.report_s = Seconds([&] {
+    reports::ReportFilesOptions report;
+    report.force_output = true;
+    reports::WriteReportFiles(site, dir / (column.engine + "-report"), report);
+  });
+  column.items = site.Items().size();
+  return column;
+}
+
 Column Measure(const std::string& engine, const db::SiteLocator& where, int runs, int items,
-               const fs::path& dir) {
+               const fs::path& dir, bool reuse) {
   Column column;
   column.engine = engine;
+  if (reuse && db::SiteDatabase::Exists(where))
+    return MeasureNextRun(column, where, runs, items, dir);
   db::SiteDatabase::Remove(where);
   db::SiteOptions options;
   options.name = "Scale park";
@@ -77,20 +101,7 @@ Column Measure(const std::string& engine, const db::SiteLocator& where, int runs
       }
     }
   });
-  db::SiteDatabase site = db::SiteDatabase::Open(where);
-  column.ingest_s = Seconds([&] { site::IngestRun(site, Row(runs / 2, items, runs), {}); });
-  column.heatmap_s = Seconds([&] {
-    heatmap::HeatmapFilesOptions heatmap;
-    heatmap.force_output = true;
-    heatmap::WriteHeatmapFiles(site, dir / (engine + "-maps"), heatmap);
-  });
-  column.report_s = Seconds([&] {
-    reports::ReportFilesOptions report;
-    report.force_output = true;
-    reports::WriteReportFiles(site, dir / (engine + "-report"), report);
-  });
-  column.items = site.Items().size();
-  return column;
+  return MeasureNextRun(column, where, runs, items, dir);
 }
 
 }  // namespace
@@ -99,21 +110,23 @@ int main(int argc, char** argv) {
   int runs = 1000, items = 1000;
   std::string postgis;
   fs::path dir = fs::temp_directory_path() / ("littermap-scale-" + std::to_string(getpid()));
-  bool keep = false;
-  for (int i = 1; i + 1 < argc; i += 2) {
+  bool keep = false, reuse = false;
+  for (int i = 1; i < argc; ++i) {
     const std::string key = argv[i];
-    if (key == "--runs") runs = std::atoi(argv[i + 1]);
-    if (key == "--items-per-run") items = std::atoi(argv[i + 1]);
-    if (key == "--postgis") postgis = argv[i + 1];
-    if (key == "--keep") keep = true, dir = argv[i + 1];
+    const char* value = i + 1 < argc ? argv[i + 1] : "";
+    if (key == "--reuse") reuse = true;
+    if (key == "--runs") runs = std::atoi(value);
+    if (key == "--items-per-run") items = std::atoi(value);
+    if (key == "--postgis") postgis = value;
+    if (key == "--keep") keep = true, dir = value;
   }
   fs::create_directories(dir);
   std::vector<Column> columns;
   try {
-    columns.push_back(Measure("GeoPackage", dir / "scale.gpkg", runs, items, dir));
+    columns.push_back(Measure("GeoPackage", dir / "scale.gpkg", runs, items, dir, reuse));
     if (!postgis.empty()) {
       columns.push_back(Measure("PostGIS", db::ParseSiteLocator(postgis + "?site=scale_bench"),
-                                runs, items, dir));
+                                runs, items, dir, reuse));
       if (!keep) db::SiteDatabase::Remove(db::ParseSiteLocator(postgis + "?site=scale_bench"));
     }
   } catch (const std::exception& e) {
