@@ -249,12 +249,26 @@ SiteReport BuildSiteReport(db::SiteDatabase& site, const SiteReportOptions& opti
   report.hotspot_min_items = hotspot_options.min_items;
   report.hotspot_min_surveys = hotspot_options.min_effort_surveys;
   const float nodata = options.heatmap.density.nodata;
-  std::vector<heatmap::Raster> run_density;
-  for (const RunFigures& run : report.runs) {
-    heatmap::SiteHeatmapOptions one_run = heatmap_options;
-    one_run.run_ids = {run.run_id};
-    run_density.push_back(heatmap::ComputeSiteHeatmap(contents, one_run).density.density);
-  }
+  // Each run's density, computed only for the runs whose coverage comes within reach of a
+  // hotspot: of a site's thousand runs, most pass far from all twenty.
+  std::vector<std::optional<heatmap::Raster>> run_density(report.runs.size());
+  const auto run_density_near = [&](std::size_t i, const db::PointXY& crs) {
+    const db::CoverageRecord* c = coverage_by_run.count(report.runs[i].run_id)
+                                      ? coverage_by_run.at(report.runs[i].run_id)
+                                      : nullptr;
+    if (c == nullptr) return false;
+    const double reach =
+        report.bandwidth_m + 2.0 * std::max(c->cell_size_m, options.heatmap.cell_size_m);
+    const bool near =
+        crs.x >= c->min_x_m - reach && crs.x <= c->min_x_m + c->width * c->cell_size_m + reach &&
+        crs.y <= c->max_y_m + reach && crs.y >= c->max_y_m - c->height * c->cell_size_m - reach;
+    if (near && !run_density[i]) {
+      heatmap::SiteHeatmapOptions one_run = heatmap_options;
+      one_run.run_ids = {report.runs[i].run_id};
+      run_density[i] = heatmap::ComputeSiteHeatmap(contents, one_run).density.density;
+    }
+    return near;
+  };
   std::unique_ptr<heatmap::Wgs84Transform> wgs84;
   if (report.frame.georeferenced()) {
     wgs84 = std::make_unique<heatmap::Wgs84Transform>(report.frame.epsg_code);
@@ -274,8 +288,10 @@ SiteReport BuildSiteReport(db::SiteDatabase& site, const SiteReportOptions& opti
     f.dominant_class = h.dominant_class;
     f.items_by_class = h.items_by_class;
     f.outline = h.outline;
-    for (const heatmap::Raster& density : run_density) {
-      f.density_by_run.push_back(MeanWithin(density, h.crs, report.bandwidth_m, nodata));
+    for (std::size_t i = 0; i < report.runs.size(); ++i) {
+      f.density_by_run.push_back(run_density_near(i, h.crs) ? MeanWithin(*run_density[i], h.crs,
+                                                                         report.bandwidth_m, nodata)
+                                                            : std::nullopt);
     }
   }
   return report;
