@@ -89,9 +89,7 @@ void RegisterSurveyCommand(CLI::App& app, CliContext& context) {
   command->add_option("-o,--output", options->output_dir,
                       "Output directory (default: NAME-survey in the current directory); with "
                       "several bags, the directory of one NAME folder per run");
-  command
-      ->add_option("-j,--jobs", arguments->jobs,
-                   "Runs reconstructed and detected at a time (each uses about 1 GB)")
+  command->add_option("-j,--jobs", arguments->jobs, "Runs reconstructed and detected at a time")
       ->capture_default_str()
       ->check(WholeNumber(1, 64));
   command->add_option(
