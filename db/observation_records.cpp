@@ -1,7 +1,6 @@
 // SiteDatabase's typed access to detections, coverage and hotspots.
 
 #include <algorithm>
-#include <set>
 #include <string>
 
 #include "core/error.hpp"
@@ -89,20 +88,6 @@ std::vector<DetectionRecord> SiteDatabase::AllDetections() {
   std::stable_sort(detections.begin(), detections.end(),
                    [](const auto& a, const auto& b) { return a.run_id < b.run_id; });
   return detections;
-}
-
-std::vector<ItemRecord> SiteDatabase::ItemsSeenBy(const std::vector<std::int64_t>& run_ids) {
-  std::set<std::int64_t> fids;
-  const auto query = connection_->Prepare(
-      "SELECT DISTINCT item_fid FROM detections WHERE run_id = ? AND item_fid IS NOT NULL");
-  for (std::int64_t run_id : run_ids) {
-    query->Bind(1, run_id);
-    while (query->Step()) fids.insert(query->ColumnInt64(0));
-    query->Reset();
-  }
-  std::vector<ItemRecord> items = Items();
-  std::erase_if(items, [&](const ItemRecord& item) { return !fids.count(item.fid); });
-  return items;
 }
 
 void SiteDatabase::AddCoverage(const CoverageRecord& coverage) {

@@ -9,10 +9,6 @@
 namespace littermap::db {
 namespace {
 
-bool IsGeometry(ColumnType type) {
-  return type == ColumnType::kPoint || type == ColumnType::kLineString;
-}
-
 std::size_t CopyTable(const TableSpec& table, SiteDatabase& from, SiteDatabase& to,
                       const ProgressCallback& progress) {
   const std::string task = std::string("copying ") + table.name;

@@ -93,7 +93,7 @@ SiteDatabase SiteDatabase::CreateGeoPackage(const std::filesystem::path& file,
     site.InTransaction([&] {
       CreateGeoPackageCore(database);
       AddSpatialRefSys(database, srs);
-      MigrateSiteSchema(database);
+      MigrateSiteSchema(site.sql());
       for (FeatureTable table : kFeatureTables) {
         table.srs_id = srs.srs_id;
         RegisterFeatureTable(database, table);
@@ -177,11 +177,6 @@ void RequireLatestVersion(const std::string& name, int version, const char* how_
                                            : "; it was written by a newer littermap"));
 }
 
-int PostgresSchemaVersion(SqlConnection& connection) {
-  const auto query = connection.Prepare("SELECT max(version) FROM littermap_schema_version");
-  return query->Step() && !query->ColumnIsNull(0) ? static_cast<int>(query->ColumnInt64(0)) : 0;
-}
-
 }  // namespace
 
 SiteDatabase SiteDatabase::OpenGeoPackage(const std::filesystem::path& file, bool read_only) {
@@ -195,7 +190,7 @@ SiteDatabase SiteDatabase::OpenGeoPackage(const std::filesystem::path& file, boo
   SqliteDatabase& database = site.sqlite();
   try {
     CheckIsGeoPackage(database);
-    if (SiteSchemaVersion(database) == 0 || !database.HasTable("sites")) {
+    if (SiteSchemaVersion(site.sql()) == 0 || !database.HasTable("sites")) {
       throw BadInputError(file.string() +
                           ": a GeoPackage but not a littermap site database (no "
                           "littermap_schema_version table); create one with 'littermap site "
@@ -203,11 +198,11 @@ SiteDatabase SiteDatabase::OpenGeoPackage(const std::filesystem::path& file, boo
     }
     if (read_only) {
       database.Execute("PRAGMA foreign_keys = ON");
-      RequireLatestVersion(file.string(), SiteSchemaVersion(database),
+      RequireLatestVersion(file.string(), SiteSchemaVersion(site.sql()),
                            "; a command that writes the site (ingest, heatmap) upgrades it");
     } else {
       site.ConfigureGeoPackage();
-      site.InTransaction([&] { MigrateSiteSchema(database); });
+      site.InTransaction([&] { MigrateSiteSchema(site.sql()); });
     }
     CheckSiteSchema(site.sql());
     site.LoadSite();
@@ -230,10 +225,10 @@ SiteDatabase SiteDatabase::OpenPostgres(const SiteLocator& where, bool read_only
   }
   if (read_only) {
     connection.Execute("SET default_transaction_read_only = on");
-    RequireLatestVersion(where.display, PostgresSchemaVersion(connection),
+    RequireLatestVersion(where.display, SiteSchemaVersion(connection),
                          "; a command that writes the site (ingest, heatmap) upgrades it");
   } else {
-    site.InTransaction([&] { MigratePostgresSiteSchema(connection); });
+    site.InTransaction([&] { MigrateSiteSchema(connection); });
   }
   CheckSiteSchema(connection);
   site.LoadSite();
@@ -252,8 +247,7 @@ void SiteDatabase::LoadSite() {
   site_.frame.origin_northing_m = query->ColumnDouble(4);
   site_.frame.rotation_deg = query->ColumnDouble(5);
   site_.created_utc = query->ColumnText(6);
-  site_.schema_version = engine() == SqlEngine::kSqlite ? SiteSchemaVersion(sqlite())
-                                                        : PostgresSchemaVersion(*connection_);
+  site_.schema_version = SiteSchemaVersion(*connection_);
 }
 
 std::string SiteDatabase::GeometryParameter(int index) const {

@@ -187,8 +187,6 @@ class SiteDatabase {
   std::vector<DetectionRecord> Detections(const std::vector<std::int64_t>& run_ids);
   // Every detection, by run id, each run's in the order stored.
   std::vector<DetectionRecord> AllDetections();
-  // The items detected by any of these runs.
-  std::vector<ItemRecord> ItemsSeenBy(const std::vector<std::int64_t>& run_ids);
   void AddCoverage(const CoverageRecord& coverage);
   std::vector<CoverageRecord> Coverages();
   // Replaces the hotspots computed with this filter (recomputed from the runs each time); the

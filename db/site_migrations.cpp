@@ -169,58 +169,37 @@ const std::vector<Migration>& Migrations() {
 
 int LatestSiteSchemaVersion() { return Migrations().back().version; }
 
-int SiteSchemaVersion(SqliteDatabase& database) {
+int SiteSchemaVersion(SqlConnection& database) {
   if (!database.HasTable("littermap_schema_version")) return 0;
-  SqliteStatement query = database.Prepare("SELECT max(version) FROM littermap_schema_version");
-  return query.Step() ? static_cast<int>(query.ColumnInt64(0)) : 0;
+  const auto query = database.Prepare("SELECT max(version) FROM littermap_schema_version");
+  return query->Step() && !query->ColumnIsNull(0) ? static_cast<int>(query->ColumnInt64(0)) : 0;
 }
 
-MigrationResult MigrateSiteSchema(SqliteDatabase& database) {
-  database.Execute(
-      "CREATE TABLE IF NOT EXISTS littermap_schema_version (version INTEGER PRIMARY KEY, "
-      "description TEXT NOT NULL, applied_utc TEXT NOT NULL "
-      "DEFAULT (strftime('%Y-%m-%dT%H:%M:%fZ','now')))");
+MigrationResult MigrateSiteSchema(SqlConnection& database) {
+  const bool postgres = database.engine() == SqlEngine::kPostgres;
+  if (!postgres) {
+    database.Execute(
+        "CREATE TABLE IF NOT EXISTS littermap_schema_version (version INTEGER PRIMARY KEY, "
+        "description TEXT NOT NULL, applied_utc TEXT NOT NULL "
+        "DEFAULT (strftime('%Y-%m-%dT%H:%M:%fZ','now')))");
+  }
   MigrationResult result;
   result.from_version = SiteSchemaVersion(database);
   result.to_version = result.from_version;
   if (result.from_version > LatestSiteSchemaVersion()) {
-    throw BadInputError(database.file().string() + ": site schema version " +
+    throw BadInputError(database.name() + ": site schema version " +
                         std::to_string(result.from_version) + " is newer than this littermap (" +
                         std::to_string(LatestSiteSchemaVersion()) + "); update littermap");
   }
   for (const Migration& migration : Migrations()) {
     if (migration.version <= result.from_version) continue;
-    database.Execute(migration.sql);
-    SqliteStatement record = database.Prepare(
-        "INSERT INTO littermap_schema_version (version, description) VALUES (?, ?)");
-    record.Bind(1, std::int64_t{migration.version});
-    record.Bind(2, migration.description);
-    record.Run();
-    result.to_version = migration.version;
-  }
-  return result;
-}
-
-MigrationResult MigratePostgresSiteSchema(SqlConnection& connection) {
-  const auto query = connection.Prepare("SELECT max(version) FROM littermap_schema_version");
-  MigrationResult result;
-  result.from_version =
-      query->Step() && !query->ColumnIsNull(0) ? static_cast<int>(query->ColumnInt64(0)) : 0;
-  result.to_version = result.from_version;
-  if (result.from_version > LatestSiteSchemaVersion()) {
-    throw BadInputError(connection.name() + ": site schema version " +
-                        std::to_string(result.from_version) + " is newer than this littermap (" +
-                        std::to_string(LatestSiteSchemaVersion()) + "); update littermap");
-  }
-  for (const Migration& migration : Migrations()) {
-    if (migration.version <= result.from_version) continue;
-    if (!migration.postgres) {
-      throw InternalError(connection.name() + ": a PostGIS site of version " +
+    if (postgres && !migration.postgres) {
+      throw InternalError(database.name() + ": a PostGIS site of version " +
                           std::to_string(result.from_version) + " needs migration " +
                           std::to_string(migration.version) + ", which is GeoPackage-only");
     }
-    connection.Execute(migration.sql);
-    const auto record = connection.Prepare(
+    database.Execute(migration.sql);
+    const auto record = database.Prepare(
         "INSERT INTO littermap_schema_version (version, description) VALUES (?, ?)");
     record->Bind(1, std::int64_t{migration.version});
     record->Bind(2, migration.description);

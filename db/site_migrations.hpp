@@ -4,7 +4,6 @@
 // once, in order, in the caller's transaction; a file from a newer littermap is refused rather than
 // guessed at.
 
-#include "core/sqlite_database.hpp"
 #include "db/sql_connection.hpp"
 
 namespace littermap::db {
@@ -18,13 +17,12 @@ struct MigrationResult {
 int LatestSiteSchemaVersion();
 
 // 0 when the version table is missing (not a littermap site, or a fresh GeoPackage).
-int SiteSchemaVersion(SqliteDatabase& database);
+int SiteSchemaVersion(SqlConnection& database);
 
-// Throws BadInputError naming the file when its schema is newer than this build knows.
-MigrationResult MigrateSiteSchema(SqliteDatabase& database);
-
-// The same for a PostGIS site (its schema made from site_schema.hpp at the version it records):
-// the later migrations, which read the same in both engines.
-MigrationResult MigratePostgresSiteSchema(SqlConnection& connection);
+// A GeoPackage gets its version table when missing, then every migration it lacks. A PostGIS
+// site (its schema made from site_schema.hpp at the version it records) gets the later
+// migrations, which read the same in both engines. Throws BadInputError naming the site when its
+// schema is newer than this build knows.
+MigrationResult MigrateSiteSchema(SqlConnection& database);
 
 }  // namespace littermap::db

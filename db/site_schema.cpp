@@ -167,8 +167,7 @@ std::string PostgresSiteSchemaSql(int srid) {
     for (const char* column : table.indexed_columns) {
       bool geometry = false;
       for (const ColumnSpec& spec : table.columns) {
-        geometry |= std::string(spec.name) == column &&
-                    (spec.type == T::kPoint || spec.type == T::kLineString);
+        geometry |= std::string(spec.name) == column && IsGeometry(spec.type);
       }
       std::string name = std::string(table.name) + "_" + column;
       std::replace(name.begin(), name.end(), ',', '_');

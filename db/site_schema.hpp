@@ -27,6 +27,10 @@ struct TableSpec {
   std::vector<const char*> indexed_columns;
 };
 
+inline bool IsGeometry(ColumnType type) {
+  return type == ColumnType::kPoint || type == ColumnType::kLineString;
+}
+
 const std::vector<TableSpec>& SiteSchema();
 
 // The PostgreSQL statements that create the schema's tables and indexes in the connection's

@@ -104,7 +104,6 @@ TEST_P(SiteEnginesTest, EveryRecordReadsBackAsWritten) {
   EXPECT_EQ(detections[0].item_fid, fid);
   EXPECT_FALSE(detections[1].item_fid);
   EXPECT_EQ(detections[1].confidence, 1.0 / 3.0);
-  EXPECT_EQ(site.ItemsSeenBy({run_id}).size(), 1u);
   const auto coverages = site.Coverages();
   ASSERT_EQ(coverages.size(), 1u);
   EXPECT_EQ(coverages[0].observed, (std::vector<std::uint8_t>{0, 1, 1, 0, 0, 1}));

@@ -10,6 +10,7 @@
 #include "db/postgres_connection.hpp"
 #include "db/site_migrations.hpp"
 #include "db/site_schema.hpp"
+#include "db/sqlite_connection.hpp"
 
 namespace littermap::db {
 namespace {
@@ -68,8 +69,9 @@ TEST(PostgresParameters, QuestionMarksBecomeNumberedOutsideQuotes) {
 // The GeoPackage reaches its schema by migrations, a PostGIS site is created from the
 // description: the two must name the same columns in the same order.
 TEST(SiteSchema, TheDescriptionIsWhatTheMigrationsBuild) {
-  SqliteDatabase database(":memory:", SqliteDatabase::Mode::kCreate);
-  MigrateSiteSchema(database);
+  SqliteConnection connection(":memory:", SqliteDatabase::Mode::kCreate);
+  MigrateSiteSchema(connection);
+  SqliteDatabase& database = connection.database();
   std::size_t tables = 0;
   for (const TableSpec& table : SiteSchema()) {
     SqliteStatement columns =
