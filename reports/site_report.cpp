@@ -77,15 +77,12 @@ void AddRunWarnings(const SiteReportOptions& options, RunFigures& run) {
 // the runs before the period set the state the period starts from).
 void CountItemChanges(
     const heatmap::SiteContents& site, const std::vector<db::RunRecord>& all_runs,
-    const std::vector<db::DetectionRecord>& detections,
     const std::unordered_map<std::int64_t, const db::CoverageRecord*>& coverage_by_run,
     std::vector<RunFigures>& figures) {
   std::unordered_map<std::int64_t, std::set<std::int64_t>> found_by_run;
-  for (const db::DetectionRecord& d : detections) {
+  for (const db::DetectionRecord& d : site.detections) {
     if (d.item_fid) found_by_run[d.run_id].insert(*d.item_fid);
   }
-  std::unordered_map<std::int64_t, const db::ItemRecord*> item_by_fid;
-  for (const auto& item : site.items) item_by_fid[item.fid] = &item;
 
   // Items present (seen, and not missed since) by 16 m square of the site CRS, so a run looks
   // only at those under its coverage: a site of years holds a million.
@@ -136,14 +133,16 @@ void CountItemChanges(
       }
     }
     for (const std::int64_t fid : found) {
-      const auto item = item_by_fid.find(fid);
+      const auto index = site.item_index.find(fid);
+      const db::ItemRecord* item =
+          index == site.item_index.end() ? nullptr : &site.items[index->second];
       if (out) {
         ++(known.count(fid) ? out->items_still_there : out->new_items);
-        if (item != item_by_fid.end()) ++out->items_by_class[item->second->class_name];
+        if (item) ++out->items_by_class[item->class_name];
       }
       known.insert(fid);
-      if (item != item_by_fid.end() && present.insert(fid).second) {
-        const db::PointXY crs = frame.ToCrs(item->second->site_xy);
+      if (item && present.insert(fid).second) {
+        const db::PointXY crs = frame.ToCrs(item->site_xy);
         const auto [sx, sy] = square(crs.x, crs.y);
         present_by_square[key(sx, sy)].push_back({fid, crs});
       }
@@ -202,11 +201,8 @@ SiteReport BuildSiteReport(db::SiteDatabase& site, const SiteReportOptions& opti
 
   // Every run of the site, read once: the runs before the period set the state it starts from.
   const std::vector<db::RunRecord> all_runs = RunsByStartTime(contents);
-  const std::vector<db::DetectionRecord>& detections = contents.detections;
   std::unordered_map<std::int64_t, const db::CoverageRecord*> coverage_by_run;
   for (const db::CoverageRecord& c : contents.coverages) coverage_by_run[c.run_id] = &c;
-  std::unordered_map<std::int64_t, std::size_t> detections_by_run;
-  for (const db::DetectionRecord& d : detections) ++detections_by_run[d.run_id];
   // The period's runs are those the heatmap selected.
   const std::set<std::int64_t> selected(map.run_ids.begin(), map.run_ids.end());
   for (const db::RunRecord& run : all_runs) {
@@ -223,12 +219,15 @@ SiteReport BuildSiteReport(db::SiteDatabase& site, const SiteReportOptions& opti
     f.coverage_fraction = report.surveyed_area_m2 > 0
                               ? std::min(1.0, f.observed_area_m2 / report.surveyed_area_m2)
                               : 0.0;
-    f.detections = detections_by_run[run.run_id];
+    const auto stored = contents.detections_of_run.find(run.run_id);
+    f.detections = stored == contents.detections_of_run.end()
+                       ? 0
+                       : stored->second.second - stored->second.first;
     f.registration_quality = run.registration_quality;
     f.quality = ParseQuality(run, f.warnings);
     report.length_m += f.length_m;
   }
-  CountItemChanges(contents, all_runs, detections, coverage_by_run, report.runs);
+  CountItemChanges(contents, all_runs, coverage_by_run, report.runs);
   for (RunFigures& f : report.runs) {
     f.items_per_100m2 = f.observed_area_m2 > 0
                             ? 100.0 * static_cast<double>(f.items_found) / f.observed_area_m2
@@ -253,10 +252,9 @@ SiteReport BuildSiteReport(db::SiteDatabase& site, const SiteReportOptions& opti
   // hotspot: of a site's thousand runs, most pass far from all twenty.
   std::vector<std::optional<heatmap::Raster>> run_density(report.runs.size());
   const auto run_density_near = [&](std::size_t i, const db::PointXY& crs) {
-    const db::CoverageRecord* c = coverage_by_run.count(report.runs[i].run_id)
-                                      ? coverage_by_run.at(report.runs[i].run_id)
-                                      : nullptr;
-    if (c == nullptr) return false;
+    const auto coverage = coverage_by_run.find(report.runs[i].run_id);
+    if (coverage == coverage_by_run.end()) return false;
+    const db::CoverageRecord* c = coverage->second;
     const double reach =
         report.bandwidth_m + 2.0 * std::max(c->cell_size_m, options.heatmap.cell_size_m);
     const bool near =

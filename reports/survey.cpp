@@ -203,13 +203,12 @@ SurveyCallbacks RunCallbacks(const SurveyCallbacks& callbacks, const std::string
   const std::string prefix = "[" + name + "] ";
   SurveyCallbacks run;
   if (callbacks.progress) {
-    run.progress = [&callbacks, &mutex, prefix](const Progress& update) {
-      const std::string task = prefix + std::string(update.task);
-      Progress prefixed = update;
-      prefixed.task = task;
-      const std::lock_guard lock(mutex);
-      callbacks.progress(prefixed);
-    };
+    run.progress = Prefixed(
+        [&callbacks, &mutex](const Progress& update) {
+          const std::lock_guard lock(mutex);
+          callbacks.progress(update);
+        },
+        prefix);
   }
   if (callbacks.print) {
     run.print = [&callbacks, &mutex, prefix](const std::string& text) {
@@ -263,7 +262,6 @@ std::vector<SurveyResult> RunSurveys(const std::vector<SurveyOptions>& runs, int
       throw UsageError("survey: two runs would write to " + survey.out.string());
     }
   }
-  fs::create_directories(surveys.front()->stages_dir);
   OpenOrCreateSite(*surveys.front());
 
   // Reconstruct and detect, `jobs` runs at a time; a run's failure is kept for the end.
