@@ -55,7 +55,7 @@ double Seconds(const std::function<void()>& work) {
 
 struct Column {
   std::string engine;
-  double build_s = 0, ingest_s = 0, heatmap_s = 0, report_s = 0;
+  double build_s = -1, ingest_s = 0, heatmap_s = 0, report_s = 0;  // build_s < 0: kept from before
   std::size_t items = 0;
 };
 
@@ -139,7 +139,13 @@ int main(int argc, char** argv) {
   for (std::size_t i = 0; i < columns.size(); ++i) std::printf("---|");
   const auto row = [&](const char* name, const char* goal, double Column::*field) {
     std::printf("\n| %s | %s |", name, goal);
-    for (const Column& c : columns) std::printf(" %.2f s |", c.*field);
+    for (const Column& c : columns) {
+      if (c.*field < 0) {
+        std::printf(" kept from before |");
+      } else {
+        std::printf(" %.2f s |", c.*field);
+      }
+    }
   };
   std::printf("\n| items in the site | |");
   for (const Column& c : columns) std::printf(" %zu |", c.items);

@@ -81,12 +81,17 @@ std::vector<DetectionRecord> SiteDatabase::Detections(const std::vector<std::int
 }
 
 std::vector<DetectionRecord> SiteDatabase::AllDetections() {
-  // In the order stored, then by run: no sort of the whole table in the database.
-  const auto query = connection_->Prepare(std::string(kDetectionColumns) + "ORDER BY detection_id");
+  // In the order stored, then by run: no sort of the whole table in the database, and none
+  // here when each run's detections were stored together (a run is ingested in one transaction).
+  const auto count = connection_->Prepare("SELECT count(*) FROM detections");
   std::vector<DetectionRecord> detections;
+  detections.reserve(count->Step() ? static_cast<std::size_t>(count->ColumnInt64(0)) : 0);
+  const auto query = connection_->Prepare(std::string(kDetectionColumns) + "ORDER BY detection_id");
   while (query->Step()) detections.push_back(ReadDetection(*query));
-  std::stable_sort(detections.begin(), detections.end(),
-                   [](const auto& a, const auto& b) { return a.run_id < b.run_id; });
+  const auto by_run = [](const auto& a, const auto& b) { return a.run_id < b.run_id; };
+  if (!std::is_sorted(detections.begin(), detections.end(), by_run)) {
+    std::stable_sort(detections.begin(), detections.end(), by_run);
+  }
   return detections;
 }
 

@@ -1,6 +1,7 @@
 #include "heatmap/exports.hpp"
 
 #include <charconv>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <string_view>
@@ -11,18 +12,54 @@
 namespace littermap::heatmap {
 namespace {
 
-// `value` with `digits` decimals, as %.Nf writes it (both round the exact binary value), without
-// printf's format parsing: the item exports write millions of numbers.
-std::string Fixed(double value, int digits) {
-  char text[400];
-  const auto result =
-      std::to_chars(text, text + sizeof text, value, std::chars_format::fixed, digits);
-  return std::string(text, result.ptr);
-}
+// The text of one export, built in memory and handed to the stream in large pieces: the item
+// exports write millions of numbers, and a stream insertion per field was most of their time.
+class ExportText {
+ public:
+  explicit ExportText(std::ostream& out) : out_(out) { text_.reserve(kFlushBytes + 4096); }
 
-std::string Fixed(double a, double b, int digits) {
-  return Fixed(a, digits) + ',' + Fixed(b, digits);
-}
+  ExportText& operator<<(std::string_view text) {
+    text_ += text;
+    return *this;
+  }
+  ExportText& operator<<(char c) {
+    text_ += c;
+    return *this;
+  }
+  ExportText& operator<<(std::int64_t value) {
+    char digits[24];
+    text_.append(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
+    return *this;
+  }
+  ExportText& operator<<(int value) { return *this << static_cast<std::int64_t>(value); }
+
+  // `value` with `digits` decimals, as %.Nf writes it (both round the exact binary value).
+  ExportText& Fixed(double value, int digits) {
+    char text[400];
+    text_.append(
+        text, std::to_chars(text, text + sizeof text, value, std::chars_format::fixed, digits).ptr);
+    return *this;
+  }
+  ExportText& Fixed(double a, double b, int digits) {
+    Fixed(a, digits);
+    text_ += ',';
+    return Fixed(b, digits);
+  }
+
+  // Ends a record: hands the text over once enough has gathered.
+  void EndRecord() {
+    if (text_.size() >= kFlushBytes) Flush();
+  }
+  void Flush() {
+    out_.write(text_.data(), static_cast<std::streamsize>(text_.size()));
+    text_.clear();
+  }
+
+ private:
+  static constexpr std::size_t kFlushBytes = 1 << 20;
+  std::ostream& out_;
+  std::string text_;
+};
 
 // A JSON string literal (class names come from files).
 std::string JsonString(const std::string& text) {
@@ -57,63 +94,102 @@ std::string CsvField(const std::string& text) {
   return out + "\"";
 }
 
-std::string LonLatColumns(const Wgs84Transform* wgs84, const db::PointXY& crs) {
-  if (wgs84 == nullptr) return ",";
-  const LonLat ll = (*wgs84)(crs);
-  return Fixed(ll.lon_deg, ll.lat_deg, 8);
+void LonLatColumns(ExportText& out, std::span<const LonLat> lonlat, std::size_t i) {
+  if (lonlat.empty()) {
+    out << ',';
+  } else {
+    out.Fixed(lonlat[i].lon_deg, lonlat[i].lat_deg, 8);
+  }
+}
+
+void CheckLonLat(const std::filesystem::path& file, std::size_t points, std::size_t lonlat) {
+  if (lonlat != 0 && lonlat != points) {
+    throw UsageError(file.string() + ": " + std::to_string(lonlat) + " WGS 84 positions for " +
+                     std::to_string(points) + " points");
+  }
 }
 
 }  // namespace
 
+std::vector<LonLat> ItemsLonLat(std::span<const db::ItemRecord> items, const db::SiteFrame& frame,
+                                const Wgs84Transform* wgs84) {
+  if (wgs84 == nullptr) return {};
+  std::vector<db::PointXY> crs;
+  crs.reserve(items.size());
+  for (const db::ItemRecord& item : items) crs.push_back(frame.ToCrs(item.site_xy));
+  return (*wgs84)(crs);
+}
+
 void WriteItemsCsv(const std::filesystem::path& file, std::span<const db::ItemRecord> items,
-                   const db::SiteFrame& frame, const Wgs84Transform* wgs84) {
+                   const db::SiteFrame& frame, std::span<const LonLat> lonlat) {
+  CheckLonLat(file, items.size(), lonlat.size());
   OutputFile output(file);
-  std::ostream& out = output.stream();
+  ExportText out(output.stream());
   out << "fid,class,site_x_m,site_y_m,easting_m,northing_m,lon_deg,lat_deg,size_m,confidence,"
          "first_run_id,last_run_id,times_seen\n";
-  for (const db::ItemRecord& item : items) {
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const db::ItemRecord& item = items[i];
     const db::PointXY crs = frame.ToCrs(item.site_xy);
-    out << item.fid << ',' << CsvField(item.class_name) << ','
-        << Fixed(item.site_xy.x, item.site_xy.y, 3) << ',' << Fixed(crs.x, crs.y, 3) << ','
-        << LonLatColumns(wgs84, crs) << ',' << Fixed(item.size_m, item.confidence, 3) << ','
-        << item.first_run_id << ',' << item.last_run_id << ',' << item.times_seen << '\n';
+    out << item.fid << ',' << CsvField(item.class_name) << ',';
+    out.Fixed(item.site_xy.x, item.site_xy.y, 3) << ',';
+    out.Fixed(crs.x, crs.y, 3) << ',';
+    LonLatColumns(out, lonlat, i);
+    out << ',';
+    out.Fixed(item.size_m, item.confidence, 3)
+        << ',' << item.first_run_id << ',' << item.last_run_id << ',' << item.times_seen << '\n';
+    out.EndRecord();
   }
+  out.Flush();
   output.Commit();
 }
 
 void WriteItemsGeoJson(const std::filesystem::path& file, std::span<const db::ItemRecord> items,
-                       const db::SiteFrame& frame, const Wgs84Transform& wgs84) {
+                       std::span<const LonLat> lonlat) {
+  if (lonlat.size() != items.size()) {
+    throw UsageError(file.string() + ": GeoJSON needs the WGS 84 position of every item (" +
+                     std::to_string(lonlat.size()) + " for " + std::to_string(items.size()) + ")");
+  }
   OutputFile output(file);
-  std::ostream& out = output.stream();
+  ExportText out(output.stream());
   out << "{\"type\":\"FeatureCollection\",\"features\":[";
   for (std::size_t i = 0; i < items.size(); ++i) {
     const db::ItemRecord& item = items[i];
-    const LonLat ll = wgs84(frame.ToCrs(item.site_xy));
     out << (i ? ",\n" : "\n") << "{\"type\":\"Feature\",\"id\":" << item.fid
-        << ",\"geometry\":{\"type\":\"Point\",\"coordinates\":[" << Fixed(ll.lon_deg, ll.lat_deg, 8)
-        << "]},\"properties\":{\"class\":" << JsonString(item.class_name)
-        << ",\"size_m\":" << Fixed(item.size_m, 3)
-        << ",\"confidence\":" << Fixed(item.confidence, 3)
-        << ",\"first_run_id\":" << item.first_run_id << ",\"last_run_id\":" << item.last_run_id
-        << ",\"times_seen\":" << item.times_seen << "}}";
+        << ",\"geometry\":{\"type\":\"Point\",\"coordinates\":[";
+    out.Fixed(lonlat[i].lon_deg, lonlat[i].lat_deg, 8)
+        << "]},\"properties\":{\"class\":" << JsonString(item.class_name) << ",\"size_m\":";
+    out.Fixed(item.size_m, 3) << ",\"confidence\":";
+    out.Fixed(item.confidence, 3) << ",\"first_run_id\":" << item.first_run_id
+                                  << ",\"last_run_id\":" << item.last_run_id
+                                  << ",\"times_seen\":" << item.times_seen << "}}";
+    out.EndRecord();
   }
   out << "\n]}\n";
+  out.Flush();
   output.Commit();
 }
 
 void WriteHotspotsCsv(const std::filesystem::path& file, std::span<const Hotspot> hotspots,
                       const db::SiteFrame& frame, const Wgs84Transform* wgs84) {
+  std::vector<db::PointXY> crs;
+  for (const Hotspot& hotspot : hotspots) crs.push_back(hotspot.crs);
+  const std::vector<LonLat> lonlat = wgs84 ? (*wgs84)(crs) : std::vector<LonLat>();
   OutputFile output(file);
-  std::ostream& out = output.stream();
+  ExportText out(output.stream());
   out << "rank,site_x_m,site_y_m,easting_m,northing_m,lon_deg,lat_deg,density_per_100m2_per_survey,"
          "dominant_class,items_nearby\n";
-  for (const Hotspot& hotspot : hotspots) {
+  for (std::size_t i = 0; i < hotspots.size(); ++i) {
+    const Hotspot& hotspot = hotspots[i];
     const db::PointXY site = frame.FromCrs(hotspot.crs);
-    out << hotspot.rank << ',' << Fixed(site.x, site.y, 3) << ','
-        << Fixed(hotspot.crs.x, hotspot.crs.y, 3) << ',' << LonLatColumns(wgs84, hotspot.crs) << ','
-        << Fixed(hotspot.density_per_100m2, 4) << ',' << CsvField(hotspot.dominant_class) << ','
-        << hotspot.items_nearby() << '\n';
+    out << hotspot.rank << ',';
+    out.Fixed(site.x, site.y, 3) << ',';
+    out.Fixed(hotspot.crs.x, hotspot.crs.y, 3) << ',';
+    LonLatColumns(out, lonlat, i);
+    out << ',';
+    out.Fixed(hotspot.density_per_100m2, 4)
+        << ',' << CsvField(hotspot.dominant_class) << ',' << hotspot.items_nearby() << '\n';
   }
+  out.Flush();
   output.Commit();
 }
 

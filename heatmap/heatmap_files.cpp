@@ -77,9 +77,10 @@ HeatmapFilesResult WriteHeatmapFiles(db::SiteDatabase& site, const std::filesyst
   std::unique_ptr<Wgs84Transform> wgs84;
   if (frame.georeferenced()) wgs84 = std::make_unique<Wgs84Transform>(frame.epsg_code);
   WriteHotspotsCsv(dir / "hotspots.csv", hotspots, frame, wgs84.get());
-  WriteItemsCsv(dir / "items.csv", map.items, frame, wgs84.get());
+  const std::vector<LonLat> lonlat = ItemsLonLat(map.items, frame, wgs84.get());
+  WriteItemsCsv(dir / "items.csv", map.items, frame, lonlat);
   if (wgs84) {
-    WriteItemsGeoJson(dir / "items.geojson", map.items, frame, *wgs84);
+    WriteItemsGeoJson(dir / "items.geojson", map.items, lonlat);
   } else {
     result.warnings.push_back(site.name() +
                               ": the site is not georeferenced (no --crs at 'site init'), so "

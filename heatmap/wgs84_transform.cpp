@@ -36,4 +36,16 @@ LonLat Wgs84Transform::operator()(const db::PointXY& crs) const {
   return {out.xy.x, out.xy.y};
 }
 
+std::vector<LonLat> Wgs84Transform::operator()(std::span<const db::PointXY> crs) const {
+  static_assert(sizeof(LonLat) == 2 * sizeof(double) && sizeof(db::PointXY) == 2 * sizeof(double));
+  std::vector<LonLat> lonlat(crs.size());
+  for (std::size_t i = 0; i < crs.size(); ++i) lonlat[i] = {crs[i].x, crs[i].y};
+  if (!lonlat.empty()) {
+    constexpr std::size_t kStride = sizeof(LonLat);
+    proj_trans_generic(impl_->transform, PJ_FWD, &lonlat[0].lon_deg, kStride, lonlat.size(),
+                       &lonlat[0].lat_deg, kStride, lonlat.size(), nullptr, 0, 0, nullptr, 0, 0);
+  }
+  return lonlat;
+}
+
 }  // namespace littermap::heatmap

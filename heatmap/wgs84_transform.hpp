@@ -2,6 +2,8 @@
 // Site CRS -> WGS 84 longitude/latitude (degrees, lon first as RFC 7946 wants) through PROJ.
 
 #include <memory>
+#include <span>
+#include <vector>
 
 #include "db/geometry_blob.hpp"
 
@@ -21,6 +23,8 @@ class Wgs84Transform {
   Wgs84Transform& operator=(const Wgs84Transform&) = delete;
 
   LonLat operator()(const db::PointXY& crs) const;
+  // Many points in one call (PROJ's array form).
+  std::vector<LonLat> operator()(std::span<const db::PointXY> crs) const;
 
  private:
   struct Impl;

@@ -30,6 +30,15 @@ TEST(Wgs84Transform, UtmCentralMeridianOnTheEquator) {
   EXPECT_NEAR(ll.lat_deg, 0.0, 1e-9);
   const LonLat north = wgs84({500000.0, 1000.0});  // 1 km north: about 0.00904 deg
   EXPECT_NEAR(north.lat_deg, 1000.0 / 110574.0, 1e-5);
+  // Many points at once give what one at a time gives.
+  const std::vector<db::PointXY> points = {{500000.0, 0.0}, {500000.0, 1000.0}, {612345.6, 5e6}};
+  const std::vector<LonLat> many = wgs84(points);
+  ASSERT_EQ(many.size(), points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    EXPECT_EQ(many[i].lon_deg, wgs84(points[i]).lon_deg) << i;
+    EXPECT_EQ(many[i].lat_deg, wgs84(points[i]).lat_deg) << i;
+  }
+  EXPECT_TRUE(wgs84(std::vector<db::PointXY>()).empty());
 }
 
 // 20 x 20 cells of 1 m, (0, 0) to (20, 20).
@@ -111,7 +120,7 @@ TEST(Exports, GeoJsonIsRfc7946LonLat) {
   frame.origin_easting_m = 500000.0;
   std::vector<db::ItemRecord> items = {{7, "plastic \"bag\"", {0.0, 0.0}, 0, 0.3, 0.9, 1, 2, 2}};
   const Wgs84Transform wgs84(32633);
-  WriteItemsGeoJson(dir / "items.geojson", items, frame, wgs84);
+  WriteItemsGeoJson(dir / "items.geojson", items, ItemsLonLat(items, frame, &wgs84));
   const auto json = nlohmann::json::parse(Slurp(dir / "items.geojson"));
   EXPECT_EQ(json["type"], "FeatureCollection");
   EXPECT_FALSE(json.contains("crs"));  // RFC 7946 removed it: WGS 84 only
@@ -123,7 +132,7 @@ TEST(Exports, GeoJsonIsRfc7946LonLat) {
   EXPECT_EQ(feature["properties"]["class"], "plastic \"bag\"");
   EXPECT_EQ(feature["properties"]["times_seen"], 2);
 
-  WriteItemsCsv(dir / "items.csv", items, frame, nullptr);
+  WriteItemsCsv(dir / "items.csv", items, frame, {});
   const std::string csv = Slurp(dir / "items.csv");
   EXPECT_NE(
       csv.find("\n7,\"plastic \"\"bag\"\"\",0.000,0.000,500000.000,0.000,,,0.300,0.900,1,2,2\n"),
@@ -133,12 +142,12 @@ TEST(Exports, GeoJsonIsRfc7946LonLat) {
   // A class name a spreadsheet would run as a formula is exported as text.
   items[0].class_name = "=cmd|' /C calc'!A0";
   items[0].fid = 8;
-  WriteItemsCsv(dir / "formula.csv", items, frame, nullptr);
+  WriteItemsCsv(dir / "formula.csv", items, frame, {});
   const std::string formula = Slurp(dir / "formula.csv");
   EXPECT_NE(formula.find("\n8,\"'=cmd|' /C calc'!A0\",0.000"), std::string::npos) << formula;
   for (const char* start : {"+1", "-1", "@SUM(A1)"}) {
     items[0].class_name = start;
-    WriteItemsCsv(dir / "formula.csv", items, frame, nullptr);
+    WriteItemsCsv(dir / "formula.csv", items, frame, {});
     EXPECT_NE(Slurp(dir / "formula.csv").find(std::string("\n8,\"'") + start + "\","),
               std::string::npos)
         << start;
