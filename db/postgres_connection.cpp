@@ -243,11 +243,20 @@ std::unique_ptr<SqlStatement> PostgresConnection::Prepare(std::string_view sql) 
 }
 
 void PostgresConnection::BeginWrite() {
+  if (write_serialisation_ == PostgresWriteSerialisation::kSerializableTransactions) {
+    Execute("BEGIN ISOLATION LEVEL SERIALIZABLE");
+    return;
+  }
   Execute("BEGIN");
   const std::unique_ptr<SqlStatement> lock =
       Prepare("SELECT pg_advisory_xact_lock(hashtext('littermap site ' || ?))");
   lock->Bind(1, schema_);
   lock->Step();
+}
+
+bool PostgresConnection::IsConflict(const std::exception& error) const {
+  const auto* postgres = dynamic_cast<const PostgresError*>(&error);
+  return postgres && (postgres->sqlstate() == "40001" || postgres->sqlstate() == "40P01");
 }
 
 bool PostgresConnection::HasTable(std::string_view table) {

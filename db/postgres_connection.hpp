@@ -25,6 +25,15 @@ class PostgresError : public Error {
   std::string sqlstate_;
 };
 
+// How the writers of one site are kept from stepping on each other. The advisory lock is
+// littermap's choice (bench/site_concurrency_bench measures both): an ingest reads the items
+// around its run and adds to them, so two ingests of overlapping areas always conflict, and
+// under SERIALIZABLE one of them redoes its whole run.
+enum class PostgresWriteSerialisation {
+  kAdvisoryLock,              // BEGIN, then the site's lock: writers queue
+  kSerializableTransactions,  // BEGIN ISOLATION LEVEL SERIALIZABLE: conflicts abort, then retry
+};
+
 class PostgresConnection : public SqlConnection {
  public:
   // conninfo: what libpq reads (a postgresql:// URI without littermap's own parameters);
@@ -42,6 +51,8 @@ class PostgresConnection : public SqlConnection {
   // BEGIN, then the site's advisory lock (held to the end of the transaction): writers of one
   // site queue, writers of other sites do not wait for them.
   void BeginWrite() override;
+  bool IsConflict(const std::exception& error) const override;
+  void set_write_serialisation(PostgresWriteSerialisation mode) { write_serialisation_ = mode; }
   void Commit() override { Execute("COMMIT"); }
   void Rollback() override { Execute("ROLLBACK"); }
   bool HasTable(std::string_view table) override;
@@ -55,6 +66,7 @@ class PostgresConnection : public SqlConnection {
   pg_conn* connection_ = nullptr;
   std::string schema_;
   std::string name_;
+  PostgresWriteSerialisation write_serialisation_ = PostgresWriteSerialisation::kAdvisoryLock;
 };
 
 // ? and ?N parameters (outside quotes) as PostgreSQL's $N.

@@ -106,6 +106,7 @@ SiteCopyResult CopySite(const SiteLocator& from, const SiteLocator& to,
   result.site_name = info.name;
   try {
     target.InTransaction([&] {
+      result.tables.clear();
       // The site row and the schema version are the target's own; the site keeps its birthday.
       const auto created = target.sql().Prepare("UPDATE sites SET created_utc = ?");
       created->Bind(1, info.created_utc);

@@ -1,6 +1,10 @@
 #include "db/site_database.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <random>
+#include <thread>
 
 #include "core/error.hpp"
 #include "core/utf8.hpp"
@@ -67,6 +71,15 @@ void SiteDatabase::RollbackQuietly() noexcept {
     connection_->Rollback();
   } catch (...) {  // NOLINT(bugprone-empty-catch): the body's exception is the one to report;
   }                // a connection that cannot roll back has lost the transaction already
+}
+
+// Up to 10 ms x 2^attempt (at most a second), at random: writers that conflicted once do not
+// meet again at the same moment.
+void SiteDatabase::PauseAfterConflict(int attempt) {
+  thread_local std::minstd_rand random(std::random_device{}());
+  const int most_ms = std::min(1000, 10 << std::min(attempt, 7));
+  std::this_thread::sleep_for(
+      std::chrono::milliseconds(std::uniform_int_distribution<int>(0, most_ms)(random)));
 }
 
 void SiteDatabase::ConfigureGeoPackage() {

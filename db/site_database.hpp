@@ -10,7 +10,9 @@
 // coverage and site_map are littermap's own. Both engines have the same tables and columns
 // (site_schema.hpp) and run the same statements.
 
+#include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -152,18 +154,31 @@ class SiteDatabase {
   SqliteDatabase& sqlite();
 
   // One writer at a time (SQLite's BEGIN IMMEDIATE; the site's advisory lock in PostgreSQL);
-  // commits, or rolls back when `body` throws.
+  // commits, or rolls back when `body` throws. A transaction the engine aborts because a
+  // concurrent one conflicted with it is run again, after a random pause, up to kWriteAttempts
+  // times: `body` must start from scratch each time it is called.
   template <typename Body>
   void InTransaction(Body&& body) {
-    connection_->BeginWrite();
-    try {
-      body();
-    } catch (...) {
-      RollbackQuietly();
-      throw;
+    for (int attempt = 1;; ++attempt) {
+      connection_->BeginWrite();
+      try {
+        body();
+        connection_->Commit();
+        return;
+      } catch (const std::exception& error) {
+        RollbackQuietly();
+        if (!connection_->IsConflict(error) || attempt == kWriteAttempts) throw;
+      } catch (...) {
+        RollbackQuietly();
+        throw;
+      }
+      ++conflicts_retried_;
+      PauseAfterConflict(attempt);
     }
-    connection_->Commit();
   }
+  static constexpr int kWriteAttempts = 20;
+  // Transactions this connection ran again after a conflict.
+  std::size_t conflicts_retried() const { return conflicts_retried_; }
 
   std::optional<std::int64_t> FindRun(const std::string& source_digest);
   std::int64_t AddRun(const RunRecord& run);
@@ -216,9 +231,11 @@ class SiteDatabase {
   void ConfigureGeoPackage();
   void LoadSite();
   void RollbackQuietly() noexcept;
+  static void PauseAfterConflict(int attempt);
 
   std::unique_ptr<SqlConnection> connection_;
   SiteInfo site_;
+  std::size_t conflicts_retried_ = 0;
 };
 
 }  // namespace littermap::db

@@ -6,6 +6,7 @@
 // its connection rather than holding two statements.
 
 #include <cstdint>
+#include <exception>
 #include <memory>
 #include <span>
 #include <string>
@@ -54,6 +55,9 @@ class SqlConnection {
   virtual void BeginWrite() = 0;
   virtual void Commit() = 0;
   virtual void Rollback() = 0;
+  // Whether `error` is the engine aborting a transaction because a concurrent one conflicted with
+  // it (PostgreSQL's serialization_failure or deadlock_detected): running it again is the cure.
+  virtual bool IsConflict(const std::exception& error) const = 0;
 
   virtual bool HasTable(std::string_view table) = 0;
   virtual bool HasColumn(std::string_view table, std::string_view column) = 0;

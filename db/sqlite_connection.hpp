@@ -19,6 +19,8 @@ class SqliteConnection : public SqlConnection {
   // BEGIN IMMEDIATE: the write lock is taken at once, so two writers queue (busy timeout)
   // instead of one failing when it upgrades a read lock.
   void BeginWrite() override { database_.Execute("BEGIN IMMEDIATE"); }
+  // BEGIN IMMEDIATE waits for the file's write lock (the busy timeout): writers never conflict.
+  bool IsConflict(const std::exception&) const override { return false; }
   void Commit() override { database_.Execute("COMMIT"); }
   void Rollback() override { database_.Execute("ROLLBACK"); }
   bool HasTable(std::string_view table) override { return database_.HasTable(table); }

@@ -177,7 +177,9 @@ IngestResult IngestRun(db::SiteDatabase& site, const RunInput& run, const Ingest
   track.reserve(run.T_site_base.size());
   for (const PlanarPose& p : run.T_site_base) track.push_back({p.x_m, p.y_m});
 
+  const IngestResult before_transaction = result;
   site.InTransaction([&] {
+    result = before_transaction;  // run again after a conflict: from scratch
     if (const auto existing = site.FindRun(run.source_digest)) {
       result.already_ingested = true;
       result.run_id = *existing;

@@ -218,6 +218,49 @@ TEST(PostgisSite, AnOlderSiteIsMigratedOnOpen) {
             "1");
 }
 
+// Two SERIALIZABLE writers that each read the items of one place and add one there: PostgreSQL
+// lets the first commit and aborts the second (40001), which runs again from the start and then
+// sees the first's item. Neither write is lost; a failure that is not a conflict is not retried.
+TEST(PostgisSite, ATransactionAbortedForAConflictRunsAgain) {
+  TempDir dir;
+  TestSite where(SiteEngine::kPostgis, dir.path(), "conflict");
+  SiteDatabase first = SiteDatabase::Create(where.locator(), SiteOptionsOf("p"));
+  SiteDatabase second = SiteDatabase::Open(where.locator());
+  std::int64_t run_id = 0;
+  first.InTransaction([&] { run_id = first.AddRun({0, "r", "d", 0, 1, 1, {}, std::nullopt, {}}); });
+  for (SiteDatabase* site : {&first, &second}) {
+    dynamic_cast<PostgresConnection&>(site->sql())
+        .set_write_serialisation(PostgresWriteSerialisation::kSerializableTransactions);
+  }
+  const Envelope place{0, 10, 0, 10};
+  int attempts = 0;
+  std::vector<std::size_t> seen;  // items the second writer saw, on each attempt
+  second.InTransaction([&] {
+    ++attempts;
+    seen.push_back(second.ItemsWithin(place).size());
+    if (attempts == 1) {
+      first.InTransaction([&] {
+        first.ItemsWithin(place);
+        first.AddItem({0, "can", {2, 2}, 0, 0.1, 0.9, run_id, run_id, 1});
+      });
+    }
+    second.AddItem({0, "cup", {5, 5}, 0, 0.1, 0.9, run_id, run_id, 1});
+  });
+  EXPECT_EQ(attempts, 2);
+  EXPECT_EQ(seen, (std::vector<std::size_t>{0, 1}));
+  EXPECT_EQ(second.conflicts_retried(), 1u);
+  EXPECT_EQ(first.conflicts_retried(), 0u);
+  EXPECT_EQ(first.Items().size(), 2u);
+
+  attempts = 0;
+  EXPECT_THROW(second.InTransaction([&] {
+    ++attempts;
+    throw BadInputError("not a conflict");
+  }),
+               BadInputError);
+  EXPECT_EQ(attempts, 1);
+}
+
 TEST(PostgisSite, AServerThatIsNotThereIsTheEnvironment) {
   const SiteLocator where = ParseSiteLocator("postgresql://nobody@127.0.0.1:1/none?site=park");
   try {
