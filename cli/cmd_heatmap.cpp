@@ -59,6 +59,10 @@ void RegisterHeatmapCommand(CLI::App& app, CliContext& context) {
                    "Cells surveyed fewer times are nodata")
       ->check(FiniteRange(0.001, 1e6));
   command
+      ->add_option("--min-confidence", options.min_confidence,
+                   "Only detections at least this sure (items.csv confidence, 0 to 1)")
+      ->check(FiniteRange(0.0, 1.0));
+  command
       ->add_option("--hotspot-min-items", arguments->options.hotspots.min_items,
                    "Distinct items a place needs to be called a hotspot")
       ->check(WholeNumber(1, kMaxHotspotMinItems));

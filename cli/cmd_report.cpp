@@ -59,6 +59,10 @@ void RegisterReportCommand(CLI::App& app, CliContext& context) {
       ->check(FiniteRange(kMinBandwidthM, kMaxBandwidthM));
   command->add_option("--cell-size", figures.heatmap.cell_size_m, "Density cell size (m)")
       ->check(FiniteRange(kMinCellSizeM, kMaxCellSizeM));
+  command
+      ->add_option("--min-confidence", figures.heatmap.min_confidence,
+                   "Only detections at least this sure (items.csv confidence, 0 to 1)")
+      ->check(FiniteRange(0.0, 1.0));
   command->callback(
       [arguments, &context] { context.run = [arguments] { RunReport(*arguments); }; });
 }

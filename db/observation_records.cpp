@@ -143,15 +143,17 @@ std::vector<CoverageRecord> SiteDatabase::Coverages() {
 void SiteDatabase::ReplaceHotspots(const HotspotFilter& filter,
                                    const std::vector<HotspotRecord>& hotspots) {
   const auto remove = connection_->Prepare(
-      "DELETE FROM hotspots WHERE filter_class = ? AND filter_from_utc = ? AND filter_to_utc = ?");
+      "DELETE FROM hotspots WHERE filter_class = ? AND filter_from_utc = ? AND filter_to_utc = ? "
+      "AND filter_min_confidence = ?");
   remove->Bind(1, filter.class_name);
   remove->Bind(2, filter.from_utc);
   remove->Bind(3, filter.to_utc);
+  remove->Bind(4, filter.min_confidence);
   remove->Run();
   const auto insert = connection_->Prepare(
       "INSERT INTO hotspots (geom, rank, site_x_m, site_y_m, density_per_100m2, dominant_class, "
-      "filter_class, filter_from_utc, filter_to_utc) VALUES (" +
-      GeometryParameter(1) + ", ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9)");
+      "filter_class, filter_from_utc, filter_to_utc, filter_min_confidence) VALUES (" +
+      GeometryParameter(1) + ", ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10)");
   for (const HotspotRecord& hotspot : hotspots) {
     const PointXY crs = site_.frame.ToCrs(hotspot.site_xy);
     const std::vector<std::uint8_t> blob = GeometryBytes(WkbType::kPoint, std::span(&crs, 1));
@@ -168,6 +170,7 @@ void SiteDatabase::ReplaceHotspots(const HotspotFilter& filter,
     insert->Bind(7, filter.class_name);
     insert->Bind(8, filter.from_utc);
     insert->Bind(9, filter.to_utc);
+    insert->Bind(10, filter.min_confidence);
     insert->Run();
   }
   // The layer's extent: of every set it holds now.

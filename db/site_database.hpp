@@ -109,8 +109,9 @@ struct CoverageRecord {
 // Which items a set of hotspots was computed from ('' for any class, date or period).
 struct HotspotFilter {
   std::string class_name;
-  std::string from_utc;  // runs starting on or after, YYYY-MM-DDTHH:MM:SSZ
-  std::string to_utc;    // runs starting before
+  std::string from_utc;        // runs starting on or after, YYYY-MM-DDTHH:MM:SSZ
+  std::string to_utc;          // runs starting before
+  std::string min_confidence;  // detections at least this sure, as given ("" for all)
 };
 
 struct HotspotRecord {

@@ -154,6 +154,12 @@ constexpr const char* kVersion5 = R"sql(
 CREATE INDEX litter_items_site_x_m_site_y_m ON litter_items (site_x_m, site_y_m);
 )sql";
 
+// Version 6: hotspots of items above a confidence (heatmap --min-confidence) are kept apart from
+// those of every item. Text, like the other filter columns: the value as given is the key.
+constexpr const char* kVersion6 = R"sql(
+ALTER TABLE hotspots ADD COLUMN filter_min_confidence TEXT NOT NULL DEFAULT '';
+)sql";
+
 const std::vector<Migration>& Migrations() {
   static const std::vector<Migration> migrations = {
       {1, "sites, runs, run_tracks, litter_items, detections, coverage, hotspots", kVersion1},
@@ -161,6 +167,7 @@ const std::vector<Migration>& Migrations() {
       {3, "runs.reconstruction_quality: reconstruct's quality.json of each run", kVersion3},
       {4, "run_tracks.run_name/start_utc; hotspots per filter; GeoPackage 1.3", kVersion4},
       {5, "litter_items index on site_x_m, site_y_m", kVersion5, true},
+      {6, "hotspots.filter_min_confidence", kVersion6, true},
   };
   return migrations;
 }

@@ -69,8 +69,12 @@ HeatmapFilesResult WriteHeatmapFiles(db::SiteDatabase& site, const std::filesyst
   const auto utc = [](const std::optional<double>& time_s) {
     return time_s ? FormatUtc(*time_s, "%Y-%m-%dT%H:%M:%SZ") : std::string();
   };
+  char min_confidence[32] = "";
+  if (options.map.min_confidence > 0.0) {
+    std::snprintf(min_confidence, sizeof min_confidence, "%g", options.map.min_confidence);
+  }
   const db::HotspotFilter filter{options.map.class_name, utc(options.map.from_time_s),
-                                 utc(options.map.to_time_s)};
+                                 utc(options.map.to_time_s), min_confidence};
   site.InTransaction([&] { site.ReplaceHotspots(filter, records); });
 
   HeatmapFilesResult result;

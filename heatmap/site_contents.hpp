@@ -27,6 +27,8 @@ struct SiteContents {
   std::unordered_map<std::int64_t, std::pair<std::size_t, std::size_t>> detections_of_run;
 };
 
-SiteContents ReadSiteContents(db::SiteDatabase& site);
+// Detections with a confidence below `min_confidence` are left out, as if never made, so every
+// figure drawn from the contents counts only the surer ones.
+SiteContents ReadSiteContents(db::SiteDatabase& site, double min_confidence = 0.0);
 
 }  // namespace littermap::heatmap

@@ -43,6 +43,9 @@ void AddRunEffort(Raster& effort, const db::CoverageRecord& coverage) {
 
 SiteHeatmap ComputeSiteHeatmap(const SiteContents& site, const SiteHeatmapOptions& options) {
   if (!(options.cell_size_m > 0.0)) throw UsageError("heatmap: cell size must be > 0 m");
+  if (!(options.min_confidence >= 0.0 && options.min_confidence <= 1.0)) {
+    throw UsageError("heatmap: the minimum confidence must be in [0, 1]");
+  }
   std::set<std::int64_t> selected;
   for (const db::RunRecord& run : site.runs) {
     if (options.from_time_s && run.start_time_s < *options.from_time_s) continue;
@@ -77,6 +80,7 @@ SiteHeatmap ComputeSiteHeatmap(const SiteContents& site, const SiteHeatmapOption
     if (range == site.detections_of_run.end()) continue;
     for (std::size_t i = range->second.first; i < range->second.second; ++i) {
       const db::DetectionRecord& detection = site.detections[i];
+      if (detection.confidence < options.min_confidence) continue;
       if (detection.item_fid) fids.push_back(*detection.item_fid);
       if (wanted(detection.class_name)) crs_points.push_back(site.frame.ToCrs(detection.site_xy));
     }
@@ -96,7 +100,7 @@ SiteHeatmap ComputeSiteHeatmap(const SiteContents& site, const SiteHeatmapOption
 }
 
 SiteHeatmap ComputeSiteHeatmap(db::SiteDatabase& site, const SiteHeatmapOptions& options) {
-  return ComputeSiteHeatmap(ReadSiteContents(site), options);
+  return ComputeSiteHeatmap(ReadSiteContents(site, options.min_confidence), options);
 }
 
 }  // namespace littermap::heatmap

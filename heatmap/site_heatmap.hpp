@@ -25,6 +25,9 @@ struct SiteHeatmapOptions {
   std::optional<double> from_time_s;  // runs starting at or after (Unix seconds)
   std::optional<double> to_time_s;    // runs starting before
   std::vector<std::int64_t> run_ids;  // only these runs; empty: every run in the period
+  // Detections less sure than this (their class's probability, items.csv "confidence") are left
+  // out, as if never made: an item counts when a selected run saw it at least this surely.
+  double min_confidence = 0.0;
 };
 
 struct SiteHeatmap {

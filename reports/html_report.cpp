@@ -204,6 +204,10 @@ void KeyFigures(const SiteReport& report, std::string& html) {
   html += "</section>";
 
   html += "<p class=\"summary\">";
+  if (report.min_confidence > 0.0) {
+    html += "Counting only litter detected with a confidence of at least " +
+            Fixed(100.0 * report.min_confidence, 0) + "&nbsp;%. ";
+  }
   if (!report.hotspots.empty()) {
     const HotspotFigures& top = report.hotspots.front();
     html += "Clean first at <b>hotspot 1</b>, " + FromTheDock(top.site_xy.x, top.site_xy.y, 0) +

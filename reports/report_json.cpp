@@ -86,7 +86,8 @@ std::string ReportJson(const SiteReport& report, const std::string& generated_ut
                     {"surveyed_area_m2", report.surveyed_area_m2},
                     {"length_m", report.length_m},
                     {"peak_density_per_100m2", report.peak_density_per_100m2},
-                    {"kernel_bandwidth_m", report.bandwidth_m}};
+                    {"kernel_bandwidth_m", report.bandwidth_m},
+                    {"min_confidence", report.min_confidence}};
   json["items_by_class"] = Counts(report.items_by_class);
   json["hotspots"] = Json::array();
   for (const HotspotFigures& h : report.hotspots) json["hotspots"].push_back(HotspotJson(h));

@@ -181,13 +181,15 @@ SiteReport BuildSiteReport(db::SiteDatabase& site, const SiteReportOptions& opti
   report.to_time_s = options.to_time_s;
   report.bandwidth_m = options.heatmap.density.kernel.bandwidth_m;
   report.density_nodata = options.heatmap.density.nodata;
+  report.min_confidence = options.heatmap.min_confidence;
 
   heatmap::SiteHeatmapOptions heatmap_options = options.heatmap;
   heatmap_options.from_time_s = options.from_time_s;
   heatmap_options.to_time_s = options.to_time_s;
   heatmap_options.class_name.clear();
   heatmap_options.run_ids.clear();
-  const heatmap::SiteContents contents = heatmap::ReadSiteContents(site);
+  const heatmap::SiteContents contents =
+      heatmap::ReadSiteContents(site, options.heatmap.min_confidence);
   report.heatmap = heatmap::ComputeSiteHeatmap(contents, heatmap_options);
   const heatmap::SiteHeatmap& map = report.heatmap;
   report.items = map.items.size();

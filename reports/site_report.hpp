@@ -94,7 +94,8 @@ struct SiteReport {
   double length_m = 0.0;
   double peak_density_per_100m2 = 0.0;
   double bandwidth_m = 0.0;
-  int hotspot_min_items = 0;  // the support a hotspot needs (heatmap/hotspots.hpp)
+  double min_confidence = 0.0;  // detections less sure were left out
+  int hotspot_min_items = 0;    // the support a hotspot needs (heatmap/hotspots.hpp)
   double hotspot_min_surveys = 0.0;
   float density_nodata = -9999.0f;  // density raster cells nobody surveyed
   std::vector<HotspotFigures> hotspots;

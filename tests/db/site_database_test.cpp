@@ -274,7 +274,8 @@ TEST(SiteDatabase, AVersionOneSiteIsMigratedOnOpen) {
     for (const char* column : {"run_name", "start_utc"}) {
       site.sqlite().Execute(std::string("ALTER TABLE run_tracks DROP COLUMN ") + column);
     }
-    for (const char* column : {"filter_class", "filter_from_utc", "filter_to_utc"}) {
+    for (const char* column :
+         {"filter_class", "filter_from_utc", "filter_to_utc", "filter_min_confidence"}) {
       site.sqlite().Execute(std::string("ALTER TABLE hotspots DROP COLUMN ") + column);
     }
     site.sqlite().Execute("DROP INDEX litter_items_site_x_m_site_y_m");
@@ -282,7 +283,8 @@ TEST(SiteDatabase, AVersionOneSiteIsMigratedOnOpen) {
     site.sqlite().Execute("DELETE FROM littermap_schema_version WHERE version > 1");
   }
   SiteDatabase site = SiteDatabase::Open(file);
-  EXPECT_EQ(site.site().schema_version, 5);
+  EXPECT_EQ(site.site().schema_version, 6);
+  EXPECT_TRUE(site.sqlite().HasColumn("hotspots", "filter_min_confidence"));
   EXPECT_EQ(Integer(site.sqlite(), "PRAGMA user_version"), 10300);
   EXPECT_EQ(Integer(site.sqlite(),
                     "SELECT count(*) FROM sqlite_master WHERE name = "

@@ -73,7 +73,7 @@ TEST_P(SiteEnginesTest, EveryRecordReadsBackAsWritten) {
       map.T_site_map = {0.5, 0.25, 0.1};
       site.SetSiteMap(map);
     });
-    site.ReplaceHotspots({"bottle", "", ""}, {{1, {3, 4}, 12.5, "bottle"}});
+    site.ReplaceHotspots({"bottle", "", "", ""}, {{1, {3, 4}, 12.5, "bottle"}});
     site.MarkItemSeen(fid, run_id);
   }
   SiteDatabase site = SiteDatabase::OpenReadOnly(where_.locator());
@@ -199,19 +199,22 @@ TEST_P(SiteEnginesTest, AFailedTransactionLeavesNothing) {
   }
 }
 
-// A PostGIS site made at version 4 (before the items' coordinate index) gets it when a writing
-// command opens it; a reading one says that it needs that.
+// A PostGIS site made at version 4 (before the items' coordinate index and the hotspots'
+// confidence filter) gets them when a writing command opens it; a reading one says that it
+// needs that.
 TEST(PostgisSite, AnOlderSiteIsMigratedOnOpen) {
   TempDir dir;
   TestSite where(SiteEngine::kPostgis, dir.path(), "v4");
   {
     SiteDatabase site = SiteDatabase::Create(where.locator(), SiteOptionsOf("p"));
     site.sql().Execute("DROP INDEX litter_items_site_x_m_site_y_m");
+    site.sql().Execute("ALTER TABLE hotspots DROP COLUMN filter_min_confidence");
     site.sql().Execute("UPDATE littermap_schema_version SET version = 4");
   }
   EXPECT_THROW(SiteDatabase::OpenReadOnly(where.locator()), BadInputError);
   SiteDatabase site = SiteDatabase::Open(where.locator());
-  EXPECT_EQ(site.site().schema_version, 5);
+  EXPECT_EQ(site.site().schema_version, 6);
+  EXPECT_TRUE(site.sql().HasColumn("hotspots", "filter_min_confidence"));
   EXPECT_EQ(Text(site.sql(),
                  "SELECT count(*) FROM pg_indexes WHERE schemaname = current_schema() AND "
                  "indexname = 'litter_items_site_x_m_site_y_m'"),

@@ -9,7 +9,12 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <string>
+#include <utility>
+#include <vector>
 
+#include "core/error.hpp"
+#include "heatmap/heatmap_files.hpp"
 #include "heatmap/kernel_density.hpp"
 #include "heatmap/site_heatmap.hpp"
 #include "sim/simulation.hpp"
@@ -110,6 +115,58 @@ TEST(SiteHeatmap, ThreeRunsCorrelateWithTheTrueDensity) {
   RecordProperty("pearson_r", std::to_string(r));
   EXPECT_GE(r, 0.8) << "over " << estimated.size() << " surveyed cells";
   std::printf("pearson_r %.3f over %zu surveyed cells\n", r, estimated.size());
+}
+
+// --min-confidence: detections less sure than the threshold are left out of the density, the
+// items and the hotspots, and the hotspots of a threshold are stored apart from those of all.
+TEST(SiteHeatmap, AMinimumConfidenceLeavesOutTheLessSureDetections) {
+  littermap::test::TempDir dir;
+  db::SiteOptions site_options;
+  site_options.name = "confidence park";
+  db::SiteDatabase site = db::SiteDatabase::Create(dir / "park.gpkg", site_options);
+  site::RunInput run;
+  run.name = run.source_digest = "run";
+  run.T_site_base = Route({{0, 10}, {40, 10}});
+  for (int i = 0; i < 4; ++i) {  // four sure cans at x = 10, four unsure cups at x = 30
+    run.items.push_back({"can" + std::to_string(i), "can", {9.0 + i, 10.5}, 0, 0.1, 0.9});
+    run.items.push_back({"cup" + std::to_string(i), "cup", {29.0 + i, 10.5}, 0, 0.1, 0.3});
+  }
+  site::IngestRun(site, run, {});
+
+  SiteHeatmapOptions options;
+  const SiteHeatmap all = ComputeSiteHeatmap(site, options);
+  EXPECT_EQ(all.items.size(), 8u);
+  EXPECT_EQ(all.detections, 8u);
+  options.min_confidence = 0.5;
+  const SiteHeatmap sure = ComputeSiteHeatmap(site, options);
+  EXPECT_EQ(sure.items.size(), 4u);
+  EXPECT_EQ(sure.detections, 4u);
+  for (const db::ItemRecord& item : sure.items) EXPECT_EQ(item.class_name, "can");
+  const GridGeometry& grid = sure.density.density.grid;
+  const int row = static_cast<int>((grid.max_y_m - 10.5) / grid.cell_size_m);
+  const auto column = [&](double x) {
+    return static_cast<int>((x - grid.min_x_m) / grid.cell_size_m);
+  };
+  EXPECT_GT(sure.density.density.at(column(10.5), row), 0.0f);
+  EXPECT_EQ(sure.density.density.at(column(30.5), row), 0.0f);
+  EXPECT_GT(all.density.density.at(column(30.5), row), 0.0f);
+  options.min_confidence = 0.95;
+  EXPECT_TRUE(ComputeSiteHeatmap(site, options).items.empty());
+  options.min_confidence = 1.5;
+  EXPECT_THROW(ComputeSiteHeatmap(site, options), UsageError);
+
+  HeatmapFilesOptions files;
+  files.map.min_confidence = 0.5;
+  EXPECT_EQ(WriteHeatmapFiles(site, dir / "sure", files).hotspots, 1u);
+  files.map.min_confidence = 0.0;
+  EXPECT_EQ(WriteHeatmapFiles(site, dir / "all", files).hotspots, 2u);
+  files.map.min_confidence = 0.5;
+  WriteHeatmapFiles(site, dir / "sure", files);  // replaces only the threshold's own
+  const auto stored = site.sql().Prepare(
+      "SELECT filter_min_confidence, count(*) FROM hotspots GROUP BY 1 ORDER BY 1");
+  std::vector<std::pair<std::string, std::int64_t>> counts;
+  while (stored->Step()) counts.emplace_back(stored->ColumnText(0), stored->ColumnInt64(1));
+  EXPECT_EQ(counts, (std::vector<std::pair<std::string, std::int64_t>>{{"", 2}, {"0.5", 1}}));
 }
 
 // The same check on the simulator: park_large surveyed three times from its dock, along its

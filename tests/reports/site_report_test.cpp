@@ -49,6 +49,34 @@ TEST(SiteReport, CountsNewStillThereAndGoneItemsPerRun) {
   EXPECT_EQ(report.runs[1].items_by_class, (ClassCounts{{"bottle", 2}, {"cup", 1}}));
 }
 
+// --min-confidence: an unsure detection is left out of every figure, as if never made.
+TEST(SiteReport, AMinimumConfidenceCountsOnlyTheSurerDetections) {
+  TempDir dir;
+  db::SiteOptions options;
+  options.name = "Park";
+  db::SiteDatabase site = db::SiteDatabase::Create(dir / "park.gpkg", options);
+  const site::RunItem sure{"a", "bottle", {5, 0}, 0, 0.2, 0.9};
+  const site::RunItem unsure{"b", "can", {10, 0}, 0, 0.1, 0.3};
+  site::IngestRun(site, FixtureRun(1, 20, {sure, unsure}), {});
+  site::IngestRun(site, FixtureRun(2, 20, {sure}), {});
+
+  const SiteReport all = BuildSiteReport(site, {});
+  EXPECT_EQ(all.items, 2u);
+  EXPECT_EQ(all.runs[1].items_gone, 1u);  // the can, which week 2 did not see
+  SiteReportOptions sure_only;
+  sure_only.heatmap.min_confidence = 0.5;
+  const SiteReport report = BuildSiteReport(site, sure_only);
+  EXPECT_EQ(report.min_confidence, 0.5);
+  EXPECT_EQ(report.items, 1u);
+  EXPECT_EQ(report.detections, 2u);
+  EXPECT_EQ(report.items_by_class, (ClassCounts{{"bottle", 1}}));
+  ASSERT_EQ(report.runs.size(), 2u);
+  EXPECT_EQ(report.runs[0].items_found, 1u);
+  EXPECT_EQ(report.runs[0].detections, 1u);
+  EXPECT_EQ(report.runs[1].items_still_there, 1u);
+  EXPECT_EQ(report.runs[1].items_gone, 0u);  // the can never counted
+}
+
 TEST(SiteReport, PutsEffortBesideCountsAndFlagsWeakRuns) {
   TempDir dir;
   db::SiteDatabase site = CreateFixtureSite(dir / "park.gpkg", "Park");
