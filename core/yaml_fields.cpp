@@ -151,6 +151,12 @@ std::vector<YamlFields> YamlFields::Children(const char* key) {
 void YamlFields::Finish() const {
   if (!node_ || !node_.IsMap()) return;
   for (const auto& entry : node_) {
+    if (!entry.first.IsScalar()) {
+      const std::string where = prefix_.empty() ? std::string("the top level") : prefix_;
+      throw BadInputError(file_.string() + ": " + where + ": a key at line " +
+                          std::to_string(entry.first.Mark().line + 1) +
+                          " is not a plain name (a list or a map used as a key)");
+    }
     const std::string key = entry.first.as<std::string>();
     if (read_.count(key) == 0) Fail(key, "unknown key");
   }

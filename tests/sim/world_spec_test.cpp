@@ -113,6 +113,9 @@ TEST(WorldSpec, CameraAndTruthSections) {
             "w.yaml: robot.camera.jitter_sigma_ms: must be in [0, 1000 / rate_hz / 18]");
   EXPECT_EQ(ErrorOf(std::string(kRoute) + "robot: {camera_mount: {z_m: 1}}\n"),
             "w.yaml: robot.camera_mount: unknown key");
+  // A map as a key (YAML's "? key"), found by the fuzzer: named, not a yaml-cpp exception.
+  EXPECT_EQ(ErrorOf(std::string(kRoute) + "robot:\n  ? {camera: 1}\n  : 2\n"),
+            "w.yaml: robot: a key at line 3 is not a plain name (a list or a map used as a key)");
   EXPECT_EQ(ErrorOf(std::string(kRoute) + "truth: {mask_every_n_frames: -1}\n"),
             "w.yaml: truth.mask_every_n_frames: must not be negative");
 }
