@@ -58,9 +58,14 @@ void SegmentAndClassify(benchmark::State& state, const std::vector<Frame>& frame
                         const Eigen::Isometry3f& T_level_camera) {
   const auto classifier = detect::LitterClassifier::Load(
       LITTERMAP_SOURCE_DIR "/samples/models/litter_classifier.yml.gz");
-  // The benchmark's argument is the normal step (organized_cloud.hpp: 1 = every pixel).
+  // The benchmark's arguments: the normal step (organized_cloud.hpp: 1 = every pixel) and the
+  // normal method (0 PCL covariance, 1 OpenCV FALS, 2 PCL average 3D gradient).
   detect::SegmentationOptions options;
   options.cloud.normal_step_px = static_cast<int>(state.range(0));
+  const detect::NormalMethod methods[] = {detect::NormalMethod::kCovariance,
+                                          detect::NormalMethod::kFals,
+                                          detect::NormalMethod::kAverage3dGradient};
+  options.cloud.normal_method = methods[state.range(1)];
   detect::FrameSegmenter segmenter(options);
   std::size_t i = 0, objects = 0, blobs = 0, with_ground = 0;
   detect::SegmentationTimings sum;
@@ -102,9 +107,11 @@ void BM_ParkFrames(benchmark::State& state) {
                      T_base_optical().cast<float>());
 }
 BENCHMARK(BM_ParkFrames)
-    ->ArgName("normal_step")
-    ->Arg(1)
-    ->Arg(2)
+    ->ArgNames({"normal_step", "method"})
+    ->Args({1, 0})
+    ->Args({2, 0})
+    ->Args({1, 1})
+    ->Args({1, 2})
     ->Unit(benchmark::kMillisecond)
     ->MinTime(5.0);
 
@@ -130,9 +137,11 @@ void BM_TumDeskFrames(benchmark::State& state) {
   SegmentAndClassify(state, frames, K, T_level_optical.cast<float>());
 }
 BENCHMARK(BM_TumDeskFrames)
-    ->ArgName("normal_step")
-    ->Arg(1)
-    ->Arg(2)
+    ->ArgNames({"normal_step", "method"})
+    ->Args({1, 0})
+    ->Args({2, 0})
+    ->Args({1, 1})
+    ->Args({1, 2})
     ->Unit(benchmark::kMillisecond)
     ->MinTime(5.0);
 

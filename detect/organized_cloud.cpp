@@ -8,6 +8,8 @@
 #include <pcl/features/integral_image_normal.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/rgbd.hpp>
 
 #include "core/error.hpp"
 
@@ -69,7 +71,62 @@ struct OrganizedCloudBuilder::Pcl {
   pcl::PointCloud<pcl::PointXYZ>::Ptr coarse = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   pcl::PointCloud<pcl::Normal> normals;
   pcl::IntegralImageNormalEstimation<pcl::PointXYZ, pcl::Normal> estimator;
+  // FALS: the camera-frame points as an image, its normals, and where a window crosses an edge.
+  std::unique_ptr<cv::rgbd::RgbdNormals> fals;
+  cv::Mat points, fals_normals, edges;
 };
+
+namespace {
+
+constexpr int kFalsWindowPx = 5;
+
+// OpenCV's FALS normals of the coarse cloud into `normals` (as PCL's estimator would fill it). A
+// window that holds a point without depth has no normal; one that crosses a depth step of more
+// than max_depth_change_factor of the depth, between neighbouring pixels, gets none either, as
+// PCL leaves the pixels next to an edge without one (FALS would average across the step).
+void FalsNormals(const pcl::PointCloud<pcl::PointXYZ>& cloud, float max_depth_change_factor,
+                 cv::rgbd::RgbdNormals& fals, cv::Mat& points, cv::Mat& normals, cv::Mat& edges,
+                 pcl::PointCloud<pcl::Normal>* out) {
+  const int width = static_cast<int>(cloud.width), height = static_cast<int>(cloud.height);
+  points.create(height, width, CV_32FC3);
+  edges.create(height, width, CV_8UC1);
+  edges.setTo(0);
+  for (int v = 0; v < height; ++v) {
+    auto* row = points.ptr<cv::Vec3f>(v);
+    auto* edge = edges.ptr<std::uint8_t>(v);
+    for (int u = 0; u < width; ++u) {
+      const pcl::PointXYZ& p = cloud(static_cast<std::uint32_t>(u), static_cast<std::uint32_t>(v));
+      row[u] = {p.x, p.y, p.z};
+      const float step = 2.0f * max_depth_change_factor * (std::abs(p.z) + 1.0f);
+      if (u > 0 && !(std::abs(p.z - row[u - 1][2]) <= step)) edge[u] = edge[u - 1] = 1;
+      if (v > 0) {
+        const float above = points.ptr<cv::Vec3f>(v - 1)[u][2];
+        if (!(std::abs(p.z - above) <= step)) edge[u] = edges.ptr<std::uint8_t>(v - 1)[u] = 1;
+      }
+    }
+  }
+  fals(points, normals);
+  cv::dilate(edges, edges,
+             cv::getStructuringElement(cv::MORPH_RECT, {kFalsWindowPx, kFalsWindowPx}));
+  for (int v = 0; v < height; ++v) {
+    const auto* n = normals.ptr<cv::Vec3f>(v);
+    const auto* edge = edges.ptr<std::uint8_t>(v);
+    for (int u = 0; u < width; ++u) {
+      pcl::Normal& o = (*out)(static_cast<std::uint32_t>(u), static_cast<std::uint32_t>(v));
+      if (edge[u] || !std::isfinite(n[u][0])) {
+        o.normal_x = o.normal_y = o.normal_z = kNaN;
+        continue;
+      }
+      const cv::Vec3f& p = points.ptr<cv::Vec3f>(v)[u];
+      const float sign = n[u].dot(p) > 0 ? -1.0f : 1.0f;  // towards the camera, as PCL's are
+      o.normal_x = sign * n[u][0];
+      o.normal_y = sign * n[u][1];
+      o.normal_z = sign * n[u][2];
+    }
+  }
+}
+
+}  // namespace
 
 OrganizedCloudBuilder::OrganizedCloudBuilder(const OrganizedCloudOptions& options)
     : options_(options), pcl_(std::make_unique<Pcl>()) {
@@ -89,6 +146,8 @@ OrganizedCloudBuilder::OrganizedCloudBuilder(const OrganizedCloudOptions& option
     case NormalMethod::kAverageDepthChange:
       pcl_->estimator.setNormalEstimationMethod(Estimator::AVERAGE_DEPTH_CHANGE);
       break;
+    case NormalMethod::kFals:
+      break;  // made at the first frame, when the image size is known
   }
   pcl_->estimator.setMaxDepthChangeFactor(options_.max_depth_change_factor);
   pcl_->estimator.setNormalSmoothingSize(options_.normal_smoothing_px /
@@ -110,8 +169,26 @@ void OrganizedCloudBuilder::Build(const cv::Mat& depth_mm, const CameraIntrinsic
   out->height = depth_mm.rows;
   FillCameraCloud(depth_mm, intrinsics, options_, &out->points_m, &out->depth_m,
                   pcl_->coarse.get());
-  pcl_->estimator.setInputCloud(pcl_->coarse);
-  pcl_->estimator.compute(pcl_->normals);
+  if (options_.normal_method == NormalMethod::kFals) {
+    const int width = static_cast<int>(pcl_->coarse->width);
+    const int height = static_cast<int>(pcl_->coarse->height);
+    const int step = options_.normal_step_px;
+    if (!pcl_->fals || pcl_->points.cols != width || pcl_->points.rows != height) {
+      const cv::Matx33f K(static_cast<float>(intrinsics.fx / step), 0,
+                          static_cast<float>(intrinsics.cx / step), 0,
+                          static_cast<float>(intrinsics.fy / step),
+                          static_cast<float>(intrinsics.cy / step), 0, 0, 1);
+      pcl_->fals =
+          std::make_unique<cv::rgbd::RgbdNormals>(height, width, CV_32F, cv::Mat(K), kFalsWindowPx,
+                                                  cv::rgbd::RgbdNormals::RGBD_NORMALS_METHOD_FALS);
+    }
+    pcl_->normals.resize(pcl_->coarse->width, pcl_->coarse->height);
+    FalsNormals(*pcl_->coarse, options_.max_depth_change_factor, *pcl_->fals, pcl_->points,
+                pcl_->fals_normals, pcl_->edges, &pcl_->normals);
+  } else {
+    pcl_->estimator.setInputCloud(pcl_->coarse);
+    pcl_->estimator.compute(pcl_->normals);
+  }
 
   const Eigen::Matrix3f R = T_level_camera.linear();
   const int step = options_.normal_step_px;
