@@ -19,10 +19,11 @@ struct ReportArguments {
   std::string output;
   std::string from;
   std::string to;
-  reports::ReportFilesOptions options = reports::StampedReportFilesOptions();
+  reports::ReportFilesOptions options;
 };
 
 void RunReport(ReportArguments arguments) {
+  reports::StampReportFilesOptions(arguments.options);
   arguments.options.figures.from_time_s = ParseUtcDate(arguments.from, "--from");
   arguments.options.figures.to_time_s = ParseUtcDate(arguments.to, "--to");
   const reports::SiteReport report = reports::WriteReportFiles(db::ParseSiteLocator(arguments.site),

@@ -1,6 +1,11 @@
 #include "reports/report_files.hpp"
 
+#include <charconv>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <ctime>
+#include <string>
 #include <system_error>
 
 #include "core/error.hpp"
@@ -12,10 +17,33 @@
 
 namespace littermap::reports {
 
+namespace {
+
+// Now, or SOURCE_DATE_EPOCH (seconds since 1970, the reproducible-builds convention) when set,
+// so that the same site gives byte-identical reports.
+double GenerationTimeS() {
+  const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
+  if (epoch == nullptr || *epoch == '\0') return static_cast<double>(std::time(nullptr));
+  std::int64_t seconds = 0;
+  const char* end = epoch + std::strlen(epoch);
+  const auto [stop, error] = std::from_chars(epoch, end, seconds);
+  if (error != std::errc() || stop != end || seconds < 0 || seconds > 253402300799) {
+    throw UsageError(std::string("SOURCE_DATE_EPOCH: not a time in whole seconds since 1970: '") +
+                     epoch + "'");
+  }
+  return static_cast<double>(seconds);
+}
+
+}  // namespace
+
+void StampReportFilesOptions(ReportFilesOptions& options) {
+  options.html.generated_utc = FormatUtc(GenerationTimeS());
+  options.html.version = LITTERMAP_VERSION;
+}
+
 ReportFilesOptions StampedReportFilesOptions() {
   ReportFilesOptions options;
-  options.html.generated_utc = FormatUtc(static_cast<double>(std::time(nullptr)));
-  options.html.version = LITTERMAP_VERSION;
+  StampReportFilesOptions(options);
   return options;
 }
 

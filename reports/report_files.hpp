@@ -18,7 +18,10 @@ struct ReportFilesOptions {
   bool force_output = false;  // write into a folder holding other files too
 };
 
-// The default figures, generated now, stamped with this littermap's version.
+// Stamps the report as generated now (or at SOURCE_DATE_EPOCH when set: throws UsageError when
+// it is not whole seconds since 1970) by this littermap's version.
+void StampReportFilesOptions(ReportFilesOptions& options);
+// The default figures, stamped.
 ReportFilesOptions StampedReportFilesOptions();
 
 // Creates `dir` if needed. Returns the figures written. Throws BadInputError when no run falls
