@@ -83,9 +83,8 @@ std::vector<DetectionRecord> SiteDatabase::Detections(const std::vector<std::int
 std::vector<DetectionRecord> SiteDatabase::AllDetections() {
   // In the order stored, then by run: no sort of the whole table in the database, and none
   // here when each run's detections were stored together (a run is ingested in one transaction).
-  const auto count = connection_->Prepare("SELECT count(*) FROM detections");
   std::vector<DetectionRecord> detections;
-  detections.reserve(count->Step() ? static_cast<std::size_t>(count->ColumnInt64(0)) : 0);
+  detections.reserve(RowCount("detections"));
   const auto query = connection_->Prepare(std::string(kDetectionColumns) + "ORDER BY detection_id");
   while (query->Step()) detections.push_back(ReadDetection(*query));
   const auto by_run = [](const auto& a, const auto& b) { return a.run_id < b.run_id; };

@@ -233,6 +233,9 @@ class SiteDatabase {
   void LoadSite();
   void RollbackQuietly() noexcept;
   static void PauseAfterConflict(int attempt);
+  // The rows of a table: what a whole-table read reserves, so a city park's million rows are not
+  // moved about as the vector grows.
+  std::size_t RowCount(const char* table);
 
   std::unique_ptr<SqlConnection> connection_;
   SiteInfo site_;

@@ -220,10 +220,13 @@ std::vector<ItemRecord> ReadItems(SqlStatement& query, std::size_t expected = 0)
 
 }  // namespace
 
+std::size_t SiteDatabase::RowCount(const char* table) {
+  const auto count = connection_->Prepare(std::string("SELECT count(*) FROM ") + table);
+  return count->Step() ? static_cast<std::size_t>(count->ColumnInt64(0)) : 0;
+}
+
 std::vector<ItemRecord> SiteDatabase::Items() {
-  // Counted first: a city park's million items are not moved about as the vector grows.
-  const auto count = connection_->Prepare("SELECT count(*) FROM litter_items");
-  const std::size_t expected = count->Step() ? static_cast<std::size_t>(count->ColumnInt64(0)) : 0;
+  const std::size_t expected = RowCount("litter_items");
   const auto query = connection_->Prepare(std::string(kItemColumns) + "ORDER BY fid");
   return ReadItems(*query, expected);
 }
