@@ -185,10 +185,14 @@ void SlamPipeline::AddGraphEdge(const TrackStep& step) {
   edges_.push_back(edge);
 }
 
-void SlamPipeline::CloseLoops(std::size_t key_frame) {
-  if (any_loop_ && key_frame < last_loop_key_frame_ + options_.loop_cooldown_key_frames) return;
+void SlamPipeline::CloseLoops(std::size_t key_frame, bool end_of_run) {
+  if (!end_of_run && any_loop_ &&
+      key_frame < last_loop_key_frame_ + options_.loop_cooldown_key_frames) {
+    return;
+  }
   const double path_m = map_.key_frames()[key_frame].path_length_m;
-  const bool wide = path_m - last_wide_search_path_m_ >= options_.wide_loop_search_every_m;
+  const bool wide =
+      end_of_run || path_m - last_wide_search_path_m_ >= options_.wide_loop_search_every_m;
   if (wide) last_wide_search_path_m_ = path_m;
   const LoopAttempt attempt =
       loop_closer_.TryClose(map_, key_frame, GraphDistancesFrom(key_frame), wide);
@@ -387,6 +391,13 @@ void SlamPipeline::Optimise() {
 }
 
 void SlamPipeline::Finish() {
+  // A survey ends back at its dock, turned to face the way it left: the likeliest loop of the run,
+  // and one the wide searches, spaced by path, miss when the last stretch was short or a turn on
+  // the spot.
+  if (options_.loop_closure && map_.key_frames().size() > 1) {
+    const std::size_t last = map_.key_frames().size() - 1;
+    if (!any_loop_ || last_loop_key_frame_ != last) CloseLoops(last, true);
+  }
   if (!unchecked_loops_.empty() || !landmark_links_.empty()) Optimise();
   PruneFinalLoops();
   quality_.landmarks = landmark_map_.graph_landmarks();

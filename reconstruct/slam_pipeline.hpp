@@ -158,7 +158,9 @@ class SlamPipeline {
 
  private:
   void AddGraphEdge(const TrackStep& step);
-  void CloseLoops(std::size_t key_frame);
+  // end_of_run: the last key frame, where a survey is back at its dock: a wide search however
+  // little path there was since the last one, whatever the cooldown.
+  void CloseLoops(std::size_t key_frame, bool end_of_run = false);
   // Place recognition on the landmarks' constellation (LandmarkMap::FindLoop), verified by the
   // optimised graph.
   void CloseLandmarkLoops(std::size_t key_frame);
