@@ -80,6 +80,7 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdomet
   }
   last_stamp_ns_ = scan.stamp_ns;
   tilted_ = tilted_ || tilt.has_value();
+  max_scan_range_m_ = std::max(max_scan_range_m_, scan.range_max_m);
   ScanPoints points = ScanToPoints(scan, T_base_laser_, options_.points, tilt);
   quality_.ground_echoes += points.ground_beams;
   TrackInput input;
@@ -262,12 +263,22 @@ std::vector<double> SlamPipeline::GraphDistancesFrom(std::size_t key_frame) cons
   return GraphDistances(map_.key_frames().size(), all, key_frame);
 }
 
+bool SlamPipeline::LandmarksInGraph() const {
+  // Before any loop, the sightings repeat what the scan matches between nearby key frames already
+  // hold (the same echoes, counted twice); indoors, where a few bins and pillars are the only
+  // round things, that double count moved the trajectories at random, and with a short-range
+  // scanner in a park it cost the sample park 6-8 cm; there only a loop closed on the landmarks
+  // brings them in. Outdoors (an IMU: uneven ground) the scan matches slide along the terrain's
+  // echoes by a few per cent over a long leg, and one loop spreads its correction over the whole
+  // path. A scanner that sees trunks as far away as they are fitted sees each from 20 m ahead to
+  // 20 m behind: its sightings hold the leg's length, and come in with the first loop of any kind.
+  return !landmark_links_.empty() ||
+         (tilted_ && any_loop_ && max_scan_range_m_ >= options_.landmark_extraction.max_range_m);
+}
+
 LandmarkTerms SlamPipeline::BuildLandmarkTerms(std::vector<std::size_t>* landmark_of_term) const {
   LandmarkTerms terms;
-  // Until landmarks close a loop, their sightings repeat what the scan matches between nearby key
-  // frames already hold (the same echoes, counted twice); indoors, where a few bins and pillars
-  // are the only round things, that double count moved the trajectories at random.
-  if (landmark_links_.empty() && !pending_landmark_loop_) return terms;
+  if (!LandmarksInGraph() && !pending_landmark_loop_) return terms;
   const std::vector<Landmark>& landmarks = landmark_map_.landmarks();
   std::vector<std::size_t> compact(landmarks.size(), landmarks.size());
   for (std::size_t i = 0; i < landmarks.size(); ++i) {
@@ -299,8 +310,8 @@ void SlamPipeline::CloseLandmarkLoops(std::size_t key_frame) {
   const KeyFrame& frame = map_.key_frames()[key_frame];
   if (frame.path_length_m - last_landmark_search_path_m_ < options_.landmark_loop_search_every_m) {
     // Between searches, sightings of old landmarks still pull the graph now and then.
-    if (landmark_links_.empty() || key_frame < last_landmark_optimised_key_frame_ +
-                                                   options_.landmark_optimise_every_key_frames) {
+    if (!LandmarksInGraph() || key_frame < last_landmark_optimised_key_frame_ +
+                                               options_.landmark_optimise_every_key_frames) {
       return;
     }
     last_landmark_optimised_key_frame_ = key_frame;
@@ -398,7 +409,7 @@ void SlamPipeline::Finish() {
     const std::size_t last = map_.key_frames().size() - 1;
     if (!any_loop_ || last_loop_key_frame_ != last) CloseLoops(last, true);
   }
-  if (!unchecked_loops_.empty() || !landmark_links_.empty()) Optimise();
+  if (!unchecked_loops_.empty() || LandmarksInGraph()) Optimise();
   PruneFinalLoops();
   quality_.landmarks = landmark_map_.graph_landmarks();
   for (const LandmarkTerm& term : BuildLandmarkTerms().terms) {

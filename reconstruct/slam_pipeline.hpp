@@ -169,6 +169,8 @@ class SlamPipeline {
   void CloseCameraLoop(const TrackInput& input, const TrackStep& step);
   // Graph distances from a key frame over the pose graph's edges and the landmark loops.
   std::vector<double> GraphDistancesFrom(std::size_t key_frame) const;
+  // Whether the landmarks' sightings hold the key frames in the pose graph (BuildLandmarkTerms).
+  bool LandmarksInGraph() const;
   // The landmarks in the graph as Ceres terms, and the landmark each term's index maps from.
   LandmarkTerms BuildLandmarkTerms(std::vector<std::size_t>* landmark_of_term = nullptr) const;
   // Takes optimised key-frame poses: the map, the tracker and the landmarks follow.
@@ -209,7 +211,8 @@ class SlamPipeline {
   std::vector<std::size_t> unchecked_loops_;  // indices into edges_ since the last optimisation
   std::vector<ScanRecord> scans_;
   std::optional<double> first_odometry_z_m_;
-  bool tilted_ = false;  // some scan came with the base's tilt
+  bool tilted_ = false;          // some scan came with the base's tilt
+  double max_scan_range_m_ = 0;  // the scanner's, as its scans state it
   // Every scan's echoes for the map, one per map cell, within map_max_range_m, relative to the
   // base in whole centimetres: a 15-minute run at 40 Hz keeps 34 000 scans until the end (440 MB
   // at full resolution in double, 60 MB like this).

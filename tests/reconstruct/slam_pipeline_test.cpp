@@ -165,6 +165,59 @@ TEST(SlamPipeline, TheEndOfTheRunGetsAWideLoopSearch) {
   EXPECT_LT(std::abs(WrapAngle(last.theta_rad - expected.theta_rad)), 0.02);
 }
 
+// The room with five posts (24-gons, 0.15 m radius: landmarks), driven around once and on until
+// the scan matcher closes a loop; returns how many landmark sightings hold key frames in the final
+// graph. tilt: an IMU reported the base level (outdoors); range_m: the scanner's reach.
+std::size_t LandmarkSightingsInTheGraph(bool tilt, double range_m) {
+  std::vector<test::Segment> walls = test::Room();
+  for (const Eigen::Vector2d& centre :
+       {Eigen::Vector2d(3, 1), Eigen::Vector2d(9, 1.2), Eigen::Vector2d(4, 6),
+        Eigen::Vector2d(10, 5.8), Eigen::Vector2d(8, 3.5)}) {
+    for (int i = 0; i < 24; ++i) {
+      const auto corner = [&](int k) {
+        const double a = 2 * std::numbers::pi * k / 24;
+        return Eigen::Vector2d(centre + 0.15 * Eigen::Vector2d(std::cos(a), std::sin(a)));
+      };
+      walls.push_back({corner(i), corner(i + 1)});
+    }
+  }
+  SlamPipeline pipeline(SlamOptions{}, {});
+  const std::vector<Eigen::Vector2d> corners = {{2, 2.2}, {10.5, 2.2}, {10.5, 4.8}, {2, 4.8}};
+  PlanarPose pose{2, 2.2, 0};
+  TimestampNs stamp_ns = 0;
+  for (int leg = 0; leg < 6; ++leg) {
+    const Eigen::Vector2d to = corners[(leg + 1) % corners.size()];
+    const double heading = std::atan2(to.y() - pose.y_m, to.x() - pose.x_m);
+    pose.theta_rad = heading;
+    while (std::hypot(to.x() - pose.x_m, to.y() - pose.y_m) > 0.05) {
+      const double step = std::min(0.2, std::hypot(to.x() - pose.x_m, to.y() - pose.y_m));
+      pose = {pose.x_m + step * std::cos(heading), pose.y_m + step * std::sin(heading), heading};
+      LaserScan scan = test::ScanFrom(walls, pose, 720);
+      scan.stamp_ns = stamp_ns += 100'000'000;
+      scan.range_max_m = range_m;
+      for (float& r : scan.ranges_m) {
+        if (r > range_m) r = std::numeric_limits<float>::infinity();
+      }
+      pipeline.AddScan(scan, GyroOdometryPose{pose, true, 0},
+                       tilt ? std::optional<Tilt>(Tilt{0, 0}) : std::nullopt);
+    }
+  }
+  pipeline.Finish();
+  EXPECT_GT(pipeline.quality().loops_accepted, 0u);
+  std::size_t sightings = 0;
+  for (const ScanRecord& record : pipeline.scans()) sightings += record.landmark_sightings;
+  return sightings;
+}
+
+// Outdoors (an IMU), with a scanner that sees as far as trunks are fitted, the sightings hold the
+// graph from the first loop of any kind; indoors, or with a short-range scanner, only after a loop
+// closed on the landmarks (none here).
+TEST(SlamPipeline, LandmarkSightingsJoinTheGraphAtAnyLoopOutdoorsWithALongRangeScanner) {
+  EXPECT_GT(LandmarkSightingsInTheGraph(true, 30), 0u);
+  EXPECT_EQ(LandmarkSightingsInTheGraph(false, 30), 0u);
+  EXPECT_EQ(LandmarkSightingsInTheGraph(true, 5.6), 0u);
+}
+
 TEST(SlamPipeline, MapRangeBeyondWhatItStoresIsAUsageError) {
   SlamOptions options;
   options.map_max_range_m = 301;
