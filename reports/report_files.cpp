@@ -41,12 +41,6 @@ void StampReportFilesOptions(ReportFilesOptions& options) {
   options.html.version = LITTERMAP_VERSION;
 }
 
-ReportFilesOptions StampedReportFilesOptions() {
-  ReportFilesOptions options;
-  StampReportFilesOptions(options);
-  return options;
-}
-
 SiteReport WriteReportFiles(db::SiteDatabase& site, const std::filesystem::path& dir,
                             const ReportFilesOptions& options) {
   PrepareOutputFolder(dir, {"-o", {"index.html", "report.json"}, options.force_output});

@@ -21,8 +21,6 @@ struct ReportFilesOptions {
 // Stamps the report as generated now (or at SOURCE_DATE_EPOCH when set: throws UsageError when
 // it is not whole seconds since 1970) by this littermap's version.
 void StampReportFilesOptions(ReportFilesOptions& options);
-// The default figures, stamped.
-ReportFilesOptions StampedReportFilesOptions();
 
 // Creates `dir` if needed. Returns the figures written. Throws BadInputError when no run falls
 // in the period, UsageError when the files cannot be written.

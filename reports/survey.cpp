@@ -111,7 +111,8 @@ std::vector<Stage> Stages(Survey& survey) {
     survey.Print(heatmap::HeatmapSummary(result, survey.maps_dir));
   };
   const auto report = [&survey](const ProgressCallback&) {
-    ReportFilesOptions outputs = StampedReportFilesOptions();
+    ReportFilesOptions outputs;
+    StampReportFilesOptions(outputs);
     outputs.figures.hotspot_min_items = survey.options.hotspot_min_items;
     survey.report = WriteReportFiles(survey.options.site, survey.report_dir, outputs);
     survey.Print("wrote " + (survey.report_dir / "index.html").string() + " and report.json");
