@@ -273,7 +273,8 @@ bool SlamPipeline::LandmarksInGraph() const {
   // path. A scanner that sees trunks as far away as they are fitted sees each from 20 m ahead to
   // 20 m behind: its sightings hold the leg's length, and come in with the first loop of any kind.
   return !landmark_links_.empty() ||
-         (tilted_ && any_loop_ && max_scan_range_m_ >= options_.landmark_extraction.max_range_m);
+         (options_.landmarks && tilted_ && any_loop_ &&
+          max_scan_range_m_ >= options_.landmark_extraction.max_range_m);
 }
 
 LandmarkTerms SlamPipeline::BuildLandmarkTerms(std::vector<std::size_t>* landmark_of_term) const {
