@@ -67,7 +67,7 @@ void SegmentAndClassify(benchmark::State& state, const std::vector<Frame>& frame
                                           detect::NormalMethod::kAverage3dGradient};
   options.cloud.normal_method = methods[state.range(1)];
   detect::FrameSegmenter segmenter(options);
-  std::size_t i = 0, objects = 0, blobs = 0, with_ground = 0;
+  std::size_t i = 0, objects = 0, blobs = 0, refined = 0, with_ground = 0;
   detect::SegmentationTimings sum;
   double classify_ms = 0;
   for (auto _ : state) {
@@ -86,6 +86,7 @@ void SegmentAndClassify(benchmark::State& state, const std::vector<Frame>& frame
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     objects += segmentation.objects.size();
     blobs += segmentation.blobs;
+    refined += segmentation.refined;
     with_ground += segmentation.ground_found ? 1 : 0;
     sum += segmentation.timings;
   }
@@ -93,6 +94,7 @@ void SegmentAndClassify(benchmark::State& state, const std::vector<Frame>& frame
   state.counters["frames_per_s"] = benchmark::Counter(n, benchmark::Counter::kIsRate);
   state.counters["ground_found"] = double(with_ground) / n;
   state.counters["blobs"] = double(blobs) / n;
+  state.counters["refined"] = double(refined) / n;
   state.counters["objects"] = double(objects) / n;
   state.counters["normals_ms"] = sum.cloud_ms / n;
   state.counters["components_ms"] = sum.components_ms / n;

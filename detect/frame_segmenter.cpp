@@ -56,6 +56,7 @@ FrameSegmentation FrameSegmenter::Segment(const cv::Mat& colour_bgr, const cv::M
       ExtractObjects(colour_bgr, cloud, ground, out.refinement, options.objects);
   out.objects = std::move(objects.objects);
   out.blobs = objects.blobs;
+  out.refined = objects.refined;
   out.timings.objects_ms = MsSince(&clock);
   return out;
 }

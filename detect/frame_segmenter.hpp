@@ -48,6 +48,7 @@ struct FrameSegmentation {
   std::vector<SegmentedObject> objects;
   std::size_t components = 0;
   std::size_t blobs = 0;
+  std::size_t refined = 0;  // blobs refined by GrabCut
   SegmentationTimings timings;
 };
 

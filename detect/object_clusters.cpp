@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
+#include <vector>
 
 #include <Eigen/Eigenvalues>
 #include <opencv2/imgproc.hpp>
@@ -21,20 +21,42 @@ cv::Rect Grown(const cv::Rect& box, const ObjectClusterOptions& options, const c
          cv::Rect(cv::Point(0, 0), image);
 }
 
-// The highest point of the mask (roi-sized) above the ground surface; -inf without points.
-float HighestPoint(const OrganizedCloud& cloud, const GroundSurface& surface, const cv::Mat& mask,
-                   const cv::Rect& roi) {
-  float top = -std::numeric_limits<float>::infinity();
+// Extent along the principal horizontal axes of the points: 4 sigma covers a uniform segment's
+// full length (sqrt(12) sigma) with margin for the depth noise of a few points.
+Eigen::Vector2f HorizontalExtent(const std::vector<Eigen::Vector3f>& points) {
+  Eigen::Vector2f mean = Eigen::Vector2f::Zero();
+  for (const auto& p : points) mean += p.head<2>();
+  mean /= static_cast<float>(points.size());
+  Eigen::Matrix2f covariance = Eigen::Matrix2f::Zero();
+  for (const auto& p : points) {
+    const Eigen::Vector2f d = p.head<2>() - mean;
+    covariance += d * d.transpose();
+  }
+  covariance /= static_cast<float>(points.size());
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2f> eigen(covariance);
+  return {std::sqrt(12.0f * std::max(0.0f, eigen.eigenvalues()[1])),
+          std::sqrt(12.0f * std::max(0.0f, eigen.eigenvalues()[0]))};
+}
+
+// Whether a blob's core alone is too tall or too wide for litter. The refined object holds the
+// core (GrabCut keeps it), so it is at least as tall and, in practice, as wide: such a core (a
+// trunk, a bush, a bench, a keyboard on a desk) is rejected before GrabCut is spent on it. The
+// height needs one depth point of the core, the width as many as Measure needs.
+bool CoreTooLarge(const OrganizedCloud& cloud, const GroundSurface& surface, const cv::Mat& core,
+                  const cv::Rect& roi, const ObjectClusterOptions& options) {
+  std::vector<Eigen::Vector3f> points;
   for (int v = 0; v < roi.height; ++v) {
-    const auto* row = mask.ptr<std::uint8_t>(v);
+    const auto* row = core.ptr<std::uint8_t>(v);
     for (int u = 0; u < roi.width; ++u) {
       const int i = cloud.Index(u + roi.x, v + roi.y);
       if (!row[u] || !cloud.HasPoint(i)) continue;
-      top = std::max(top, static_cast<float>(
-                              surface.HeightAbove(cloud.points_m[static_cast<std::size_t>(i)])));
+      const Eigen::Vector3f& p = cloud.points_m[static_cast<std::size_t>(i)];
+      if (surface.HeightAbove(p) > options.max_height_m) return true;
+      points.push_back(p);
     }
   }
-  return top;
+  return static_cast<int>(points.size()) >= options.min_depth_points &&
+         HorizontalExtent(points)[0] > options.max_size_m;
 }
 
 // GrabCut in the grown box; returns the refined object mask of `roi` size.
@@ -126,17 +148,9 @@ bool Measure(const OrganizedCloud& cloud, const GroundSurface& surface, const cv
     range += p.norm();
   }
   mean /= static_cast<float>(points.size());
-  Eigen::Matrix2f covariance = Eigen::Matrix2f::Zero();
-  for (const auto& p : points) {
-    const Eigen::Vector2f d = p.head<2>() - mean.head<2>();
-    covariance += d * d.transpose();
-  }
-  covariance /= static_cast<float>(points.size());
-  // Extent along the principal axes: 4 sigma covers a uniform segment's full length (sqrt(12)
-  // sigma) with margin for the depth noise of a few points.
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2f> eigen(covariance);
-  object->size_m = std::sqrt(12.0f * std::max(0.0f, eigen.eigenvalues()[1]));
-  object->width_m = std::sqrt(12.0f * std::max(0.0f, eigen.eigenvalues()[0]));
+  const Eigen::Vector2f extent = HorizontalExtent(points);
+  object->size_m = extent[0];
+  object->width_m = extent[1];
   object->height_m = top;
   object->centroid_level_m = mean;
   object->ground_level_m = {mean.x(), mean.y(),
@@ -184,12 +198,11 @@ ObjectClusterResult ExtractObjects(const cv::Mat& colour_bgr, const OrganizedClo
     if (options.refine) {
       cv::Mat core;
       cv::erode(blob, core, cv::Mat());
-      // The refined object holds the core, so it is at least as tall: a core too tall (a trunk,
-      // a bush, a bench) is rejected before GrabCut is spent on it.
-      if (HighestPoint(cloud, ground.surface, core, roi) > options.max_height_m) {
+      if (CoreTooLarge(cloud, ground.surface, core, roi, options)) {
         ++result.rejected_size;
         continue;
       }
+      ++result.refined;
       mask = RefineWithGrabCut(colour_bgr, blob, core, refinement.non_ground(roi) & ~blob,
                                refinement.labels, roi, options.max_refine_pixels,
                                options.uncertain_fringe_px);

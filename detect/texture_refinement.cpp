@@ -145,7 +145,9 @@ std::size_t GraphCut(const cv::Mat& colour_bgr, const cv::Mat& labels,
   }
   const int nodes = static_cast<int>(pixel_of_node.size());
   if (nodes == 0) return 0;
-  cv::detail::GCGraph<double> graph(static_cast<unsigned>(nodes), static_cast<unsigned>(2 * nodes));
+  // Single precision: the weights are log-likelihoods and smoothness terms of at most a few tens,
+  // and the max-flow moves half the memory. Up to two edges (a pair of arcs each) per node.
+  cv::detail::GCGraph<float> graph(static_cast<unsigned>(nodes), static_cast<unsigned>(4 * nodes));
   const auto* colour = colour_bgr.ptr<cv::Vec3b>(0);
   const int width = labels.cols, height = labels.rows;
   auto smoothness = [&](int a, int b) {
@@ -173,7 +175,7 @@ std::size_t GraphCut(const cv::Mat& colour_bgr, const cv::Mat& labels,
       const int m = node[static_cast<std::size_t>(j)];
       if (m >= 0) {
         if (k < 2) {
-          const double w = smoothness(i, j);
+          const auto w = static_cast<float>(smoothness(i, j));
           graph.addEdges(n, m, w, w);
         }
         continue;
@@ -182,7 +184,7 @@ std::size_t GraphCut(const cv::Mat& colour_bgr, const cv::Mat& labels,
       if (other == kGround) to_object += smoothness(i, j);
       if (other == kNonGround) to_ground += smoothness(i, j);
     }
-    graph.addTermWeights(n, to_ground, to_object);
+    graph.addTermWeights(n, static_cast<float>(to_ground), static_cast<float>(to_object));
   }
   graph.maxFlow();
   std::size_t cut = 0;

@@ -72,6 +72,20 @@ TEST(FrameSegmenter, ObjectsTallerThanLitterAreNotObjects) {
   EXPECT_TRUE(result.objects.empty());
 }
 
+// A board lying flat, too wide for litter but as low as a carton: its core alone is measured too
+// wide, so it is rejected before GrabCut is spent on it; a carton beside it is still refined.
+TEST(FrameSegmenter, CoresWiderThanLitterAreRejectedBeforeRefinement) {
+  SyntheticScene scene;
+  scene.boxes.push_back({{2.2, -0.8, 0.0}, {2.6, 0.2, 0.04}, {30, 60, 160}});  // 1 m board
+  scene.boxes.push_back({{3.0, 0.5, 0.0}, {3.2, 0.6, 0.03}, {230, 230, 230}});
+  const FrameSegmentation result = Segment(scene);
+  ASSERT_TRUE(result.ground_found);
+  ASSERT_EQ(result.blobs, 2u);
+  EXPECT_EQ(result.refined, 1u);
+  ASSERT_EQ(result.objects.size(), 1u);
+  EXPECT_NEAR(result.objects[0].centroid_level_m.x(), 3.1, 0.06);
+}
+
 // The TUM freiburg2 desk, camera about 0.8 m above the desk and pitched ~40 degrees down: the
 // desk is the ground; the mug, the tape roll and the can standing on it are objects.
 TEST(FrameSegmenter, RealDeskFromTumIsGroundWithObjectsOnIt) {
