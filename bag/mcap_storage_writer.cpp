@@ -8,6 +8,7 @@
 #include <cstring>
 #include <exception>
 #include <utility>
+#include <vector>
 
 #include "bag/mcap_records.hpp"
 #include "bag/storage_file.hpp"
@@ -34,7 +35,7 @@ class McapStorageWriter : public StorageFileWriter {
     mcap::AppendRecord(out, Opcode::kHeader, header);
     Put(out);
     if (std::fflush(stream_) != 0) Fail("cannot write");
-    synced_position_ = position_;
+    commits_.push_back(position_);
   }
 
   ~McapStorageWriter() override {
@@ -101,7 +102,7 @@ class McapStorageWriter : public StorageFileWriter {
   void Commit() override {
     CloseChunk();
     if (std::fflush(stream_) != 0 || ::fsync(fileno(stream_)) != 0) Fail("cannot sync");
-    synced_position_ = position_;
+    if (position_ != commits_.back()) commits_.push_back(position_);
   }
 
   // A write that fails while closing (the disk full) is thrown once the last commit is salvaged.
@@ -218,18 +219,27 @@ class McapStorageWriter : public StorageFileWriter {
   // After a failed write (the disk full): cuts the file back to its last commit, every record of
   // which is on disk whole, and ends it there with a data end and a footer without summary, which
   // readers answer by scanning the data. The uncommitted messages are lost, as in a crash; the
-  // file is valid MCAP. The ending takes 50 bytes, fewer than the failed write freed.
+  // file is valid MCAP. The ending takes 50 bytes: when the disk filled less than that after the
+  // last commit, the file ends at the commit before it (one more second of the recording lost).
   void Salvage() {
     std::fflush(stream_);  // fails again; what it wrote beyond the commit is cut off below
-    std::clearerr(stream_);
-    if (::ftruncate(fileno(stream_), static_cast<off_t>(synced_position_)) != 0 ||
-        std::fseek(stream_, static_cast<long>(synced_position_), SEEK_SET) != 0) {
-      Fail("cannot cut the file back to its last commit");
+    for (std::size_t k = commits_.size(); k-- > 0;) {
+      std::clearerr(stream_);
+      const std::uint64_t commit = commits_[k];
+      if (::ftruncate(fileno(stream_), static_cast<off_t>(commit)) != 0 ||
+          std::fseek(stream_, static_cast<long>(commit), SEEK_SET) != 0) {
+        Fail("cannot cut the file back to its last commit");
+      }
+      position_ = commit;
+      std::vector<std::uint8_t> out;
+      AppendDataEnd(out);
+      try {
+        End(std::move(out), 0, 0);
+        return;
+      } catch (const Error&) {
+        if (k == 0) throw;  // not even the header's ending fits
+      }
     }
-    position_ = synced_position_;
-    std::vector<std::uint8_t> out;
-    AppendDataEnd(out);
-    End(std::move(out), 0, 0);
   }
 
   void Put(std::span<const std::uint8_t> bytes) {
@@ -294,8 +304,8 @@ class McapStorageWriter : public StorageFileWriter {
   McapStorageOptions options_;
   std::FILE* stream_;
   std::uint64_t position_ = 0;
-  std::uint64_t synced_position_ = 0;  // the end of the last commit, on disk whole
-  bool failed_ = false;                // a write failed: Close salvages the last commit
+  std::vector<std::uint64_t> commits_;  // where each commit ended, on disk whole; first the header
+  bool failed_ = false;                 // a write failed: Close salvages the last commit
   std::vector<mcap::Schema> schemas_;
   std::vector<mcap::Channel> channels_;
   mcap::Statistics statistics_;

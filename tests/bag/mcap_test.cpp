@@ -4,6 +4,10 @@
 // channels inside chunks) read in log-time order.
 
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <fstream>
@@ -201,6 +205,69 @@ TEST(Mcap, CutOffFileReadsUpToTheCutWithAWarning) {
   std::uint64_t read = 0;
   while (auto message = reader.Next()) ++read;
   EXPECT_EQ(read, kept);
+}
+
+// Writes ten commits of 20 messages each, uncompressed (so every run lays the file out alike);
+// returns the file's size after each commit.
+std::vector<std::uintmax_t> WriteCommits(const std::filesystem::path& bag) {
+  BagWriterOptions options;
+  options.storage = "mcap";
+  options.mcap.compression = McapCompression::kNone;
+  BagWriter writer(bag, options);
+  writer.AddTopic("/scan", "test_msgs/msg/Blob", TopicQos::kSensorData, "uint8[] data");
+  std::vector<std::uintmax_t> sizes;
+  for (std::uint64_t i = 0; i < 200; ++i) {
+    writer.Write("/scan", 1'000'000'000 + static_cast<TimestampNs>(i) * 1000, RunsPayload(i, 300));
+    if (i % 20 == 19) {
+      writer.Flush();
+      sizes.push_back(std::filesystem::file_size(OnlyFile(bag)));
+    }
+  }
+  writer.Close();
+  return sizes;
+}
+
+// The disk fills less than the ending's 50 bytes after a commit: the file ends at the commit
+// before it and reads whole, with no damage.
+TEST(Mcap, ADiskFullJustAfterACommitEndsTheFileAtTheCommitBefore) {
+  TempDir dir;
+  const std::vector<std::uintmax_t> sizes = WriteCommits(dir / "free");
+  ASSERT_EQ(sizes.size(), 10u);
+  // In a child process: a file size limit 20 bytes past the 5th commit, SIGXFSZ ignored (as
+  // littermap does), so the 6th commit fails with EFBIG as a full disk fails with ENOSPC.
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{sizes[4] + 20, sizes[4] + 20};
+    setrlimit(RLIMIT_FSIZE, &limit);
+    try {
+      WriteCommits(dir / "full");
+      _exit(10);
+    } catch (const Error& error) {
+      _exit(error.kind() == ErrorKind::kEnvironment ? 0 : 11);
+    } catch (...) {
+      _exit(12);
+    }
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  ASSERT_EQ(WEXITSTATUS(status), 0) << "10: no error, 11: not an environment error, 12: another";
+  BagReader reader(dir / "full");
+  reader.SetVerifyChecksums(true);
+  for (const std::string& warning : reader.warnings()) {
+    EXPECT_EQ(warning.find("cut off"), std::string::npos) << warning;
+  }
+  std::uint64_t read = 0;
+  while (auto message = reader.Next()) ++read;
+  EXPECT_EQ(read, 80u);  // the 4th commit's messages: the 5th's ending did not fit
+  EXPECT_EQ(std::filesystem::file_size(OnlyFile(dir / "full")), sizes[3] + 50);
+  const std::vector<std::uint8_t> bytes = ReadFile(OnlyFile(dir / "full"));
+  ASSERT_GE(bytes.size(), mcap::kMagic.size());
+  EXPECT_TRUE(std::equal(mcap::kMagic.begin(), mcap::kMagic.end(),
+                         bytes.end() - static_cast<std::ptrdiff_t>(mcap::kMagic.size())))
+      << "the file does not end with MCAP's closing magic";
 }
 
 TEST(Mcap, DamagedChunkIsSkippedAndNamed) {
