@@ -4,10 +4,6 @@
 // channels inside chunks) read in log-time order.
 
 #include <gtest/gtest.h>
-#include <signal.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <fstream>
@@ -18,6 +14,7 @@
 #include "bag/mcap_compression.hpp"
 #include "bag/mcap_records.hpp"
 #include "support/expect_bad_input.hpp"
+#include "support/file_size_limit.hpp"
 #include "support/temp_dir.hpp"
 
 namespace littermap::bag {
@@ -233,27 +230,18 @@ TEST(Mcap, ADiskFullJustAfterACommitEndsTheFileAtTheCommitBefore) {
   TempDir dir;
   const std::vector<std::uintmax_t> sizes = WriteCommits(dir / "free");
   ASSERT_EQ(sizes.size(), 10u);
-  // In a child process: a file size limit 20 bytes past the 5th commit, SIGXFSZ ignored (as
-  // littermap does), so the 6th commit fails with EFBIG as a full disk fails with ENOSPC.
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    signal(SIGXFSZ, SIG_IGN);
-    const rlimit limit{sizes[4] + 20, sizes[4] + 20};
-    setrlimit(RLIMIT_FSIZE, &limit);
+  // A file size limit 20 bytes past the 5th commit: the 6th commit fails.
+  const int exit_code = test::RunWithFileSizeLimit(sizes[4] + 20, [&] {
     try {
       WriteCommits(dir / "full");
-      _exit(10);
+      return 10;
     } catch (const Error& error) {
-      _exit(error.kind() == ErrorKind::kEnvironment ? 0 : 11);
+      return error.kind() == ErrorKind::kEnvironment ? 0 : 11;
     } catch (...) {
-      _exit(12);
+      return 12;
     }
-  }
-  int status = 0;
-  ASSERT_EQ(waitpid(child, &status, 0), child);
-  ASSERT_TRUE(WIFEXITED(status));
-  ASSERT_EQ(WEXITSTATUS(status), 0) << "10: no error, 11: not an environment error, 12: another";
+  });
+  ASSERT_EQ(exit_code, 0) << "10: no error, 11: not an environment error, 12: another";
   BagReader reader(dir / "full");
   reader.SetVerifyChecksums(true);
   for (const std::string& warning : reader.warnings()) {

@@ -5,14 +5,11 @@
 #include "core/output_file.hpp"
 
 #include <gtest/gtest.h>
-#include <signal.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <string>
 
 #include "core/error.hpp"
+#include "support/file_size_limit.hpp"
 #include "support/temp_dir.hpp"
 #include "support/test_files.hpp"
 
@@ -61,28 +58,19 @@ TEST(OutputFile, AFullDiskIsAnEnvironmentErrorNamingTheFile) {
   test::TempDir dir;
   const fs::path file = dir / "trajectory.tum";
   WriteFileAtomically(file, "old");
-  // In a child process: a 4 kB file size limit, SIGXFSZ ignored (as littermap does), so writing
-  // 64 kB fails with EFBIG as a full disk fails with ENOSPC.
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    signal(SIGXFSZ, SIG_IGN);
-    const rlimit limit{4096, 4096};
-    setrlimit(RLIMIT_FSIZE, &limit);
+  // Writing 64 kB with a 4 kB file size limit.
+  const int exit_code = test::RunWithFileSizeLimit(4096, [&] {
     try {
       WriteFileAtomically(file, std::string(65536, 'x'));
-      _exit(10);
+      return 10;
     } catch (const Error& error) {
       const bool named = std::string(error.what()).starts_with(file.string() + ": cannot write");
-      _exit(error.kind() == ErrorKind::kEnvironment && named ? 0 : 11);
+      return error.kind() == ErrorKind::kEnvironment && named ? 0 : 11;
     } catch (...) {
-      _exit(12);
+      return 12;
     }
-  }
-  int status = 0;
-  ASSERT_EQ(waitpid(child, &status, 0), child);
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 0) << "10: no error, 11: wrong kind or file, 12: another error";
+  });
+  EXPECT_EQ(exit_code, 0) << "10: no error, 11: wrong kind or file, 12: another error";
   EXPECT_EQ(Slurp(file), "old");
   EXPECT_FALSE(fs::exists(file.string() + ".tmp"));
 }
