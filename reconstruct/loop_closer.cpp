@@ -12,8 +12,8 @@ namespace {
 
 // Distance of key frame j from `current` along the pose graph, or along the path without one.
 double GraphDistance(const std::vector<KeyFrame>& frames, std::size_t current, std::size_t j,
-                     const std::vector<double>& graph_distance_m) {
-  return j < graph_distance_m.size() ? graph_distance_m[j]
+                     const GraphReach& reach) {
+  return j < reach.distance_m.size() ? reach.distance_m[j]
                                      : frames[current].path_length_m - frames[j].path_length_m;
 }
 
@@ -22,7 +22,34 @@ bool Better(const IcpResult& a, const IcpResult& b) {
   return a.inlier_ratio > b.inlier_ratio;
 }
 
+// The key frame of `candidates` nearest to `position` (candidates not empty).
+std::size_t NearestOf(const KeyFrameMap& map, const std::vector<std::size_t>& candidates,
+                      const PlanarPose& position) {
+  const auto& frames = map.key_frames();
+  std::size_t best = candidates.front();
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t j : candidates) {
+    const double distance = std::hypot(frames[j].T_world_base.x_m - position.x_m,
+                                       frames[j].T_world_base.y_m - position.y_m);
+    if (distance < nearest) {
+      nearest = distance;
+      best = j;
+    }
+  }
+  return best;
+}
+
 }  // namespace
+
+GraphReach ReachFrom(std::size_t key_frames, const std::vector<PoseGraphEdge>& edges,
+                     std::size_t current) {
+  GraphReach reach;
+  reach.distance_m = GraphDistances(key_frames, edges, current);
+  reach.odometry_heading_variance_rad2 = GraphDistances(
+      key_frames, edges, current,
+      [](const PoseGraphEdge& edge) { return edge.odometry_sigma_rad * edge.odometry_sigma_rad; });
+  return reach;
+}
 
 void LoopCloserOptions::Validate() const {
   icp.Validate();
@@ -34,7 +61,8 @@ void LoopCloserOptions::Validate() const {
   }
   correlative.Validate();
   if (!(wide_window_m > 0) || !(wide_window_rad > 0) || !(max_wide_window_m > 0) ||
-      !(max_wide_window_rad > 0) || wide_window_per_m < 0 || wide_window_rad_per_m < 0) {
+      !(max_wide_window_rad > 0) || wide_window_per_m < 0 || wide_window_rad_per_m < 0 ||
+      !(odometry_drift_sigmas >= 0)) {
     throw UsageError("loop closure: wide search windows must be > 0");
   }
   if (!(min_wide_matching_ratio > 0 && min_wide_matching_ratio <= 1) ||
@@ -50,33 +78,87 @@ LoopCloser::LoopCloser(const LoopCloserOptions& options) : options_(options) {
 }
 
 LoopAttempt LoopCloser::TryClose(const KeyFrameMap& map, std::size_t current,
-                                 const std::vector<double>& graph_distance_m, bool wide) const {
-  LoopAttempt attempt = TryNearest(map, current, graph_distance_m);
+                                 const GraphReach& reach, bool wide) const {
+  LoopAttempt attempt = TryNearest(map, current, reach);
   if (attempt.verdict == LoopVerdict::kAccepted || !wide) return attempt;
-  LoopAttempt wide_attempt = TryWide(map, current, graph_distance_m);
+  LoopAttempt wide_attempt = TryWide(map, current, reach);
   return wide_attempt.verdict == LoopVerdict::kNoCandidate ? attempt : wide_attempt;
 }
 
-LoopAttempt LoopCloser::TryNearest(const KeyFrameMap& map, std::size_t current,
-                                   const std::vector<double>& graph_distance_m) const {
+std::vector<std::size_t> LoopCloser::Within(const KeyFrameMap& map, std::size_t current,
+                                            const PlanarPose& position, double radius_m) const {
   const auto& frames = map.key_frames();
-  const KeyFrame& now = frames[current];
-  std::size_t best = 0;
-  double best_distance = std::numeric_limits<double>::infinity();
+  std::vector<std::size_t> within;
   for (std::size_t j = 0; j < current; ++j) {
-    if (now.path_length_m - frames[j].path_length_m < options_.min_path_separation_m) break;
-    const double distance = std::hypot(frames[j].T_world_base.x_m - now.T_world_base.x_m,
-                                       frames[j].T_world_base.y_m - now.T_world_base.y_m);
-    if (distance <= options_.search_radius_m && distance < best_distance) {
-      best_distance = distance;
-      best = j;
+    if (frames[current].path_length_m - frames[j].path_length_m < options_.min_path_separation_m) {
+      break;
+    }
+    if (std::hypot(frames[j].T_world_base.x_m - position.x_m,
+                   frames[j].T_world_base.y_m - position.y_m) <= radius_m) {
+      within.push_back(j);
     }
   }
-  if (!std::isfinite(best_distance)) return {};
+  return within;
+}
+
+LoopAttempt LoopCloser::TryNearest(const KeyFrameMap& map, std::size_t current,
+                                   const GraphReach& reach) const {
+  const PlanarPose& here = map.key_frames()[current].T_world_base;
+  const std::vector<std::size_t> around = Within(map, current, here, options_.search_radius_m);
+  if (around.empty()) return {};
+  const std::size_t best = NearestOf(map, around, here);
   const bool far =
-      GraphDistance(frames, current, best, graph_distance_m) >= options_.far_graph_distance_m;
+      GraphDistance(map.key_frames(), current, best, reach) >= options_.far_graph_distance_m;
   return TryCandidate(map, current, best,
-                      far ? options_.min_wide_matching_ratio : options_.min_matching_ratio);
+                      far ? options_.min_wide_matching_ratio : options_.min_matching_ratio,
+                      HeadingWindowRad(map, current, best, reach));
+}
+
+LoopAttempt LoopCloser::Confirm(const KeyFrameMap& map, std::size_t current,
+                                const TentativeLoop& tentative) const {
+  const auto& frames = map.key_frames();
+  const std::size_t tentative_key_frame = tentative.attempt.edge->to;
+  // Where the tentative correction puts the current key frame.
+  const PlanarPose predicted =
+      Compose(tentative.T_world_corrected,
+              Between(frames[tentative_key_frame].T_world_base, frames[current].T_world_base));
+  // Against every old key frame around there: the place may have been passed more than once, and
+  // in the other direction a forward-looking scanner saw other sides of it.
+  const std::vector<std::size_t> around = Within(map, current, predicted, options_.search_radius_m);
+  if (around.empty()) return {};
+  MapPoints submap = map.WorldPoints(around);
+  const IcpTarget target(std::move(submap.points), std::move(submap.normals));
+  const IcpResult match = MatchIcp(SourcePoints(map, current), target, predicted, options_.icp);
+  LoopAttempt attempt;
+  attempt.candidate = NearestOf(map, around, match.T_target_source);
+  attempt.match = match;
+  const PlanarPose moved = Between(predicted, match.T_target_source);
+  if (match.converged &&
+      (std::hypot(moved.x_m, moved.y_m) > options_.max_confirmation_disagreement_m ||
+       std::abs(moved.theta_rad) > options_.max_confirmation_disagreement_rad)) {
+    attempt.verdict = LoopVerdict::kRejectedDisagreement;
+    return attempt;
+  }
+  return Judge(map, current, attempt.candidate, match, options_.min_matching_ratio,
+               tentative.attempt.window);
+}
+
+double LoopCloser::MatchedHeadingRad(const KeyFrameMap& map, std::size_t current, std::size_t j,
+                                     const GraphReach& reach) const {
+  return options_.wide_window_rad +
+         options_.wide_window_rad_per_m * GraphDistance(map.key_frames(), current, j, reach);
+}
+
+double LoopCloser::OdometryHeadingRad(std::size_t j, const GraphReach& reach) const {
+  return j < reach.odometry_heading_variance_rad2.size()
+             ? options_.odometry_drift_sigmas * std::sqrt(reach.odometry_heading_variance_rad2[j])
+             : 0;
+}
+
+double LoopCloser::HeadingWindowRad(const KeyFrameMap& map, std::size_t current, std::size_t j,
+                                    const GraphReach& reach) const {
+  return std::min(options_.max_wide_window_rad,
+                  MatchedHeadingRad(map, current, j, reach) + OdometryHeadingRad(j, reach));
 }
 
 Points2 LoopCloser::SourcePoints(const KeyFrameMap& map, std::size_t current) const {
@@ -93,32 +175,43 @@ Points2 LoopCloser::SourcePoints(const KeyFrameMap& map, std::size_t current) co
   return VoxelDownsample(points, options_.source_voxel_size_m);
 }
 
-LoopAttempt LoopCloser::TryCandidate(const KeyFrameMap& map, std::size_t current,
-                                     std::size_t candidate, double min_ratio) const {
+MapPoints LoopCloser::CandidateSubmap(const KeyFrameMap& map, std::size_t current,
+                                      std::size_t candidate) const {
   const auto& frames = map.key_frames();
-  const KeyFrame& now = frames[current];
   // The submap stops short of the recent path, so the loop is checked against old map only.
   std::size_t last = std::min(candidate + options_.submap_half_window, current - 1);
-  while (last > candidate &&
-         now.path_length_m - frames[last].path_length_m < options_.min_path_separation_m) {
+  while (last > candidate && frames[current].path_length_m - frames[last].path_length_m <
+                                 options_.min_path_separation_m) {
     --last;
   }
   const std::size_t first =
       candidate > options_.submap_half_window ? candidate - options_.submap_half_window : 0;
-  MapPoints submap = map.WorldPoints(first, last);
+  return map.WorldPoints(first, last);
+}
+
+LoopAttempt LoopCloser::TryCandidate(const KeyFrameMap& map, std::size_t current,
+                                     std::size_t candidate, double min_ratio,
+                                     double heading_rad) const {
+  const KeyFrame& now = map.key_frames()[current];
+  MapPoints submap = CandidateSubmap(map, current, candidate);
   const IcpTarget target(std::move(submap.points), std::move(submap.normals));
 
   const Points2 source = SourcePoints(map, current);
   IcpResult match = MatchIcp(source, target, now.T_world_base, options_.icp);
+  double heading_span_rad = options_.guess_step_rad;  // of the initial guesses, if tried
   if (!(match.converged && match.inlier_ratio >= min_ratio)) {
     // A small grid of initial guesses around the estimate (drift moved the old map), tried
-    // with every third point; the best is refined with all of them.
+    // with every third point; the best is refined with all of them. The headings step by
+    // guess_step_rad over the heading window, at least one step either side.
     Points2 sparse;
     for (std::size_t i = 0; i < source.size(); i += 3) sparse.push_back(source[i]);
+    const int headings =
+        std::max(1, static_cast<int>(std::ceil(heading_rad / options_.guess_step_rad)));
+    heading_span_rad = headings * options_.guess_step_rad;
     IcpResult best_sparse;
     for (int ix = -1; ix <= 1; ++ix) {
       for (int iy = -1; iy <= 1; ++iy) {
-        for (int it = -1; it <= 1; ++it) {
+        for (int it = -headings; it <= headings; ++it) {
           if (ix == 0 && iy == 0 && it == 0) continue;
           const PlanarPose guess{now.T_world_base.x_m + ix * options_.guess_step_m,
                                  now.T_world_base.y_m + iy * options_.guess_step_m,
@@ -133,11 +226,13 @@ LoopAttempt LoopCloser::TryCandidate(const KeyFrameMap& map, std::size_t current
       if (Better(refined, match)) match = refined;
     }
   }
-  return Judge(map, current, candidate, match, min_ratio, {});
+  // The agreement check allows the guesses' span beyond the first step (Judge adds that one).
+  return Judge(map, current, candidate, match, min_ratio,
+               {0, 0, heading_span_rad - options_.guess_step_rad});
 }
 
 LoopAttempt LoopCloser::TryWide(const KeyFrameMap& map, std::size_t current,
-                                const std::vector<double>& graph_distance_m) const {
+                                const GraphReach& reach) const {
   const auto& frames = map.key_frames();
   const KeyFrame& now = frames[current];
   // Every earlier key frame whose view can overlap the scan within the drift it can have; the
@@ -146,7 +241,7 @@ LoopAttempt LoopCloser::TryWide(const KeyFrameMap& map, std::size_t current,
   double window_m = 0, window_rad = 0;
   for (std::size_t j = 0; j < current; ++j) {
     if (now.path_length_m - frames[j].path_length_m < options_.min_path_separation_m) break;
-    const double graph_m = GraphDistance(frames, current, j, graph_distance_m);
+    const double graph_m = GraphDistance(frames, current, j, reach);
     const double drift_m = std::min(options_.max_wide_window_m,
                                     options_.wide_window_m + options_.wide_window_per_m * graph_m);
     const double distance = std::hypot(frames[j].T_world_base.x_m - now.T_world_base.x_m,
@@ -156,9 +251,7 @@ LoopAttempt LoopCloser::TryWide(const KeyFrameMap& map, std::size_t current,
     }
     reachable.push_back(j);
     window_m = std::max(window_m, drift_m);
-    window_rad = std::max(
-        window_rad, std::min(options_.max_wide_window_rad,
-                             options_.wide_window_rad + options_.wide_window_rad_per_m * graph_m));
+    window_rad = std::max(window_rad, HeadingWindowRad(map, current, j, reach));
   }
   if (reachable.empty()) return {};
   MapPoints submap = map.WorldPoints(reachable);
@@ -174,17 +267,18 @@ LoopAttempt LoopCloser::TryWide(const KeyFrameMap& map, std::size_t current,
   const IcpTarget target(std::move(submap.points), std::move(submap.normals));
   const IcpResult match = MatchIcp(source, target, coarse.T_target_source, options_.icp);
   // The edge starts at the reachable key frame nearest to the matched pose.
-  double nearest = std::numeric_limits<double>::infinity();
-  for (std::size_t j : reachable) {
-    const double distance = std::hypot(frames[j].T_world_base.x_m - match.T_target_source.x_m,
-                                       frames[j].T_world_base.y_m - match.T_target_source.y_m);
-    if (distance < nearest) {
-      nearest = distance;
-      attempt.candidate = j;
-    }
+  attempt = Judge(map, current, NearestOf(map, reachable, match.T_target_source), match,
+                  options_.min_matching_ratio, {window_m, window_m, window_rad});
+  if (attempt.verdict == LoopVerdict::kAccepted &&
+      match.inlier_ratio < options_.min_wide_matching_ratio) {
+    // Too weak alone; worth confirming only where the scans lost the heading (see
+    // confirm_within_key_frames).
+    const std::size_t j = attempt.candidate;
+    attempt.verdict = OdometryHeadingRad(j, reach) > MatchedHeadingRad(map, current, j, reach)
+                          ? LoopVerdict::kTentative
+                          : LoopVerdict::kRejectedMatch;
   }
-  return Judge(map, current, attempt.candidate, match, options_.min_wide_matching_ratio,
-               {window_m, window_m, window_rad});
+  return attempt;
 }
 
 LoopAttempt LoopCloser::Judge(const KeyFrameMap& map, std::size_t current, std::size_t candidate,
@@ -195,6 +289,7 @@ LoopAttempt LoopCloser::Judge(const KeyFrameMap& map, std::size_t current, std::
   LoopAttempt attempt;
   attempt.candidate = candidate;
   attempt.match = match;
+  attempt.window = window;
   if (!match.converged || match.inlier_ratio < min_ratio ||
       match.rms_residual_m > options_.max_rms_residual_m) {
     attempt.verdict = LoopVerdict::kRejectedMatch;

@@ -51,9 +51,24 @@ struct LoopCloserOptions {
   double wide_window_rad = 0.05;
   double wide_window_rad_per_m = 0.0006;
   double max_wide_window_rad = 0.35;
+  // Key frames placed by odometry alone (the scans did not match) drift the heading by up to this
+  // many standard deviations of the odometry model over them: a few in a row can turn it more
+  // than a long matched path, and the searches' heading windows widen for it.
+  double odometry_drift_sigmas = 3;
   double min_correlative_score = 0.4;     // mean likelihood of the scan on the old map
   double min_wide_matching_ratio = 0.85;  // for wide matches and far candidates
-  double far_graph_distance_m = 300;      // a candidate this far along the graph is "far"
+  // After a stretch where the scans did not match and odometry alone turned the heading by more
+  // than the matched path can have (OdometryHeadingRad > MatchedHeadingRad), the drift is beyond
+  // the nearest-candidate search, and an open outdoor view overlays too few echoes for a wide
+  // match on its own. There a wide match that overlays less than min_wide_matching_ratio of the
+  // scan but at least min_matching_ratio is tentative: a loop only if one of the next few key
+  // frames, put where its correction says, matches the old map there too (min_matching_ratio,
+  // ICP from that pose) and ICP moves it no further than these. Elsewhere it is rejected: in a
+  // corridor the next key frame slides along the same walls, so its agreement proves nothing.
+  std::size_t confirm_within_key_frames = 6;
+  double max_confirmation_disagreement_m = 0.3;
+  double max_confirmation_disagreement_rad = 0.05;
+  double far_graph_distance_m = 300;  // a candidate this far along the graph is "far"
   // A key frame with fewer points than this (a few trunks in a park) is matched together with
   // the key frames just before it, up to this far back along the path: their relative poses
   // are accurate, and together they pin the pose down where one sparse scan cannot.
@@ -71,36 +86,82 @@ struct LoopCloserOptions {
   void Validate() const;
 };
 
-enum class LoopVerdict { kNoCandidate, kAccepted, kRejectedMatch, kRejectedDisagreement };
+// Where the earlier key frames are from the current one over the pose graph: the distance along
+// it, and the variance its key frames placed by odometry alone add to the heading on the way (the
+// least over the paths; PoseGraphEdge::odometry_sigma_rad). The searches' windows grow with both.
+// Empty: along the path, without loops or key frames placed by odometry.
+struct GraphReach {
+  std::vector<double> distance_m;
+  std::vector<double> odometry_heading_variance_rad2;
+};
+
+// The reach of every key frame from `current` over these edges.
+GraphReach ReachFrom(std::size_t key_frames, const std::vector<PoseGraphEdge>& edges,
+                     std::size_t current);
+
+enum class LoopVerdict {
+  kNoCandidate,
+  kAccepted,
+  kRejectedMatch,
+  kRejectedDisagreement,
+  kTentative  // a wide match awaiting its confirmation (LoopCloser::Confirm)
+};
 
 struct LoopAttempt {
   LoopVerdict verdict = LoopVerdict::kNoCandidate;
   std::size_t candidate = 0;  // the earlier key frame
   IcpResult match;
-  std::optional<PoseGraphEdge> edge;  // set when accepted
+  std::optional<PoseGraphEdge> edge;  // set when accepted or tentative
+  PlanarPose window;                  // the half-widths the search covered (x, y, heading)
+};
+
+// A tentative loop: key frame edge->to, corrected to T_world_corrected.
+struct TentativeLoop {
+  LoopAttempt attempt;
+  PlanarPose T_world_corrected;
 };
 
 class LoopCloser {
  public:
   explicit LoopCloser(const LoopCloserOptions& options);
   // Tries to close a loop from key frame `current` to an earlier key frame; with `wide` the wide
-  // search too. graph_distance_m: per key frame, its distance from `current` along the pose
-  // graph; empty means along the path (no loops yet).
-  LoopAttempt TryClose(const KeyFrameMap& map, std::size_t current,
-                       const std::vector<double>& graph_distance_m = {}, bool wide = false) const;
+  // search too.
+  LoopAttempt TryClose(const KeyFrameMap& map, std::size_t current, const GraphReach& reach = {},
+                       bool wide = false) const;
+  // Whether key frame `current` confirms a tentative loop of an earlier key frame: the attempt
+  // for its own edge, accepted if it does (then the tentative edge is a loop too).
+  LoopAttempt Confirm(const KeyFrameMap& map, std::size_t current,
+                      const TentativeLoop& tentative) const;
 
  private:
   // Matches key frame `current` against the submap around `candidate` and applies the checks.
+  // The initial guesses cover heading_rad either side of the estimate.
   LoopAttempt TryCandidate(const KeyFrameMap& map, std::size_t current, std::size_t candidate,
-                           double min_ratio) const;
+                           double min_ratio, double heading_rad) const;
+  // The old map around `candidate` that key frame `current` is matched against: the key frames
+  // either side of it, stopping short of the recent path.
+  MapPoints CandidateSubmap(const KeyFrameMap& map, std::size_t current,
+                            std::size_t candidate) const;
+  // The earlier key frames far enough back along the path from `current` and within radius_m of
+  // `position`.
+  std::vector<std::size_t> Within(const KeyFrameMap& map, std::size_t current,
+                                  const PlanarPose& position, double radius_m) const;
   // The points matched for key frame `current`, in its base frame (see min_source_points).
   Points2 SourcePoints(const KeyFrameMap& map, std::size_t current) const;
   // The wide search around key frame `current`.
-  LoopAttempt TryWide(const KeyFrameMap& map, std::size_t current,
-                      const std::vector<double>& graph_distance_m) const;
+  LoopAttempt TryWide(const KeyFrameMap& map, std::size_t current, const GraphReach& reach) const;
   // Matches against the submap around the earlier key frame nearest to `current`.
   LoopAttempt TryNearest(const KeyFrameMap& map, std::size_t current,
-                         const std::vector<double>& graph_distance_m) const;
+                         const GraphReach& reach) const;
+  // The heading drift between key frame j and `current` that their matched path explains (the
+  // wide search's window for its length), and the drift that key frames placed by odometry alone
+  // on the way add.
+  double MatchedHeadingRad(const KeyFrameMap& map, std::size_t current, std::size_t j,
+                           const GraphReach& reach) const;
+  double OdometryHeadingRad(std::size_t j, const GraphReach& reach) const;
+  // The heading window (half-width) over which key frame j can have drifted from `current`.
+  double HeadingWindowRad(const KeyFrameMap& map, std::size_t current, std::size_t j,
+                          const GraphReach& reach) const;
   // The verdict on a match of key frame `current` that an edge from `candidate` would carry;
   // `window`: the half-widths a wide search covered (zero for the nearest-candidate search).
   LoopAttempt Judge(const KeyFrameMap& map, std::size_t current, std::size_t candidate,

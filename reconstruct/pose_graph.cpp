@@ -112,12 +112,20 @@ Eigen::Matrix3d EdgeInformation(const Eigen::Matrix3d& information_world, double
 
 std::vector<double> GraphDistances(std::size_t poses, const std::vector<PoseGraphEdge>& edges,
                                    std::size_t source) {
+  return GraphDistances(poses, edges, source, [](const PoseGraphEdge& edge) {
+    return std::hypot(edge.T_from_to.x_m, edge.T_from_to.y_m);
+  });
+}
+
+std::vector<double> GraphDistances(std::size_t poses, const std::vector<PoseGraphEdge>& edges,
+                                   std::size_t source,
+                                   const std::function<double(const PoseGraphEdge&)>& length) {
   std::vector<std::vector<std::pair<std::size_t, double>>> adjacent(poses);
   for (const PoseGraphEdge& edge : edges) {
     if (edge.from >= poses || edge.to >= poses) continue;
-    const double length = std::hypot(edge.T_from_to.x_m, edge.T_from_to.y_m);
-    adjacent[edge.from].emplace_back(edge.to, length);
-    adjacent[edge.to].emplace_back(edge.from, length);
+    const double edge_length = length(edge);
+    adjacent[edge.from].emplace_back(edge.to, edge_length);
+    adjacent[edge.to].emplace_back(edge.from, edge_length);
   }
   std::vector<double> distance(poses, std::numeric_limits<double>::infinity());
   if (source >= poses) return distance;
@@ -129,9 +137,9 @@ std::vector<double> GraphDistances(std::size_t poses, const std::vector<PoseGrap
     const auto [d, node] = queue.top();
     queue.pop();
     if (d > distance[node]) continue;
-    for (const auto& [next, length] : adjacent[node]) {
-      if (d + length < distance[next]) {
-        distance[next] = d + length;
+    for (const auto& [next, step] : adjacent[node]) {
+      if (d + step < distance[next]) {
+        distance[next] = d + step;
         queue.emplace(distance[next], next);
       }
     }

@@ -7,6 +7,7 @@
 // Cauchy, stays convex, so a true loop far from the drifted estimate is still pulled in.
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -22,6 +23,9 @@ struct PoseGraphEdge {
   Eigen::Matrix3d information = Eigen::Matrix3d::Identity();  // order (x, y, theta)
   bool loop = false;
   bool camera = false;  // a loop from an RGB-D alignment (else from scan matching)
+  // An edge to a key frame placed by odometry alone: the standard deviation of its heading by the
+  // odometry model (zero for a matched edge, whose drift the matcher bounds per metre).
+  double odometry_sigma_rad = 0;
 };
 
 // Landmarks in the graph: 2D points, each sighting a range-bearing factor from its pose
@@ -74,9 +78,12 @@ Eigen::Matrix3d EdgeInformation(const Eigen::Matrix3d& information_world, double
                                 double sigma_floor_m, double sigma_floor_rad);
 
 // Distance of every pose from `source` along the graph's edges (shortest path, each edge as long
-// as its translation); infinity for poses it does not reach.
+// as its translation, or as `length` says); infinity for poses it does not reach.
 std::vector<double> GraphDistances(std::size_t poses, const std::vector<PoseGraphEdge>& edges,
                                    std::size_t source);
+std::vector<double> GraphDistances(std::size_t poses, const std::vector<PoseGraphEdge>& edges,
+                                   std::size_t source,
+                                   const std::function<double(const PoseGraphEdge&)>& length);
 
 // r^T I r of one edge at the given poses (chi-squared with 3 degrees of freedom if the
 // information is right).

@@ -138,7 +138,7 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdomet
   scans_.push_back(record);
   StoreMapPoints(still_base ? *still_base : echoes_base);
   if (step.new_key_frame) {
-    if (step.key_frame > 0) AddGraphEdge(step);
+    if (step.key_frame > 0) AddGraphEdge(input, step);
     if (options_.landmarks) {
       const KeyFrame& frame = map_.key_frames()[step.key_frame];
       const std::vector<LandmarkObservation> circles =
@@ -172,21 +172,31 @@ void SlamPipeline::StoreMapPoints(const Points2& points_base) {
   }
 }
 
-void SlamPipeline::AddGraphEdge(const TrackStep& step) {
+void SlamPipeline::AddGraphEdge(const TrackInput& input, const TrackStep& step) {
   const auto& frames = map_.key_frames();
   PoseGraphEdge edge;
   edge.from = step.key_frame - 1;
   edge.to = step.key_frame;
   edge.T_from_to = Between(frames[edge.from].T_world_base, frames[edge.to].T_world_base);
-  edge.information =
-      step.routine == Routine::kOdometryOnly
-          ? DiagonalInformation(options_.odometry_sigma_m, options_.odometry_sigma_rad)
-          : EdgeInformation(step.information, frames[edge.from].T_world_base.theta_rad,
-                            options_.edge_sigma_floor_m, options_.edge_sigma_floor_rad);
+  if (step.routine == Routine::kOdometryOnly) {
+    edge.information = DiagonalInformation(options_.odometry_sigma_m, options_.odometry_sigma_rad);
+    // How far the heading can have turned wrong over the edge, by the tracker's motion model.
+    const Prediction prediction = !step.odometry_used       ? Prediction::kConstantVelocity
+                                  : input.heading_from_gyro ? Prediction::kGyroOdometry
+                                                            : Prediction::kOdometry;
+    const Eigen::Matrix3d model = PredictionInformation(
+        options_.tracker, edge.T_from_to,
+        ToSeconds(frames[edge.to].stamp_ns - frames[edge.from].stamp_ns), prediction);
+    edge.odometry_sigma_rad = 1 / std::sqrt(model(2, 2));
+  } else {
+    edge.information = EdgeInformation(step.information, frames[edge.from].T_world_base.theta_rad,
+                                       options_.edge_sigma_floor_m, options_.edge_sigma_floor_rad);
+  }
   edges_.push_back(edge);
 }
 
 void SlamPipeline::CloseLoops(std::size_t key_frame, bool end_of_run) {
+  if (ConfirmTentativeLoop(key_frame)) return;
   if (!end_of_run && any_loop_ &&
       key_frame < last_loop_key_frame_ + options_.loop_cooldown_key_frames) {
     return;
@@ -195,8 +205,7 @@ void SlamPipeline::CloseLoops(std::size_t key_frame, bool end_of_run) {
   const bool wide =
       end_of_run || path_m - last_wide_search_path_m_ >= options_.wide_loop_search_every_m;
   if (wide) last_wide_search_path_m_ = path_m;
-  const LoopAttempt attempt =
-      loop_closer_.TryClose(map_, key_frame, GraphDistancesFrom(key_frame), wide);
+  const LoopAttempt attempt = loop_closer_.TryClose(map_, key_frame, ReachFrom(key_frame), wide);
   switch (attempt.verdict) {
     case LoopVerdict::kNoCandidate:
       return;
@@ -208,19 +217,48 @@ void SlamPipeline::CloseLoops(std::size_t key_frame, bool end_of_run) {
       ++quality_.loop_candidates;
       ++quality_.loops_rejected_disagreement;
       return;
+    case LoopVerdict::kTentative:
+      ++quality_.loop_candidates;
+      if (tentative_loop_) ++quality_.loops_rejected_match;  // the older one was not confirmed
+      tentative_loop_ = TentativeLoop{attempt, attempt.match.T_target_source};
+      return;
     case LoopVerdict::kAccepted:
       ++quality_.loop_candidates;
       break;
   }
+  AddLoopEdge(attempt);
+  Optimise();
+}
+
+bool SlamPipeline::ConfirmTentativeLoop(std::size_t key_frame) {
+  if (!tentative_loop_) return false;
+  const std::size_t tentative_key_frame = tentative_loop_->attempt.edge->to;
+  if (key_frame <= tentative_key_frame) return false;  // only a later key frame confirms it
+  if (key_frame > tentative_key_frame + options_.loops.confirm_within_key_frames) {
+    tentative_loop_.reset();
+    ++quality_.loops_rejected_match;
+    return false;
+  }
+  const LoopAttempt attempt = loop_closer_.Confirm(map_, key_frame, *tentative_loop_);
+  if (attempt.verdict != LoopVerdict::kAccepted) return false;
+  ++quality_.loop_candidates;
+  ++quality_.loops_confirmed;
+  AddLoopEdge(tentative_loop_->attempt);
+  AddLoopEdge(attempt);
+  tentative_loop_.reset();
+  Optimise();
+  return true;
+}
+
+void SlamPipeline::AddLoopEdge(const LoopAttempt& attempt) {
   PoseGraphEdge edge = *attempt.edge;
   edge.information = EdgeInformation(attempt.match.information,
                                      map_.key_frames()[edge.from].T_world_base.theta_rad,
                                      options_.edge_sigma_floor_m, options_.edge_sigma_floor_rad);
   edges_.push_back(edge);
   unchecked_loops_.push_back(edges_.size() - 1);
-  last_loop_key_frame_ = key_frame;
+  last_loop_key_frame_ = edge.to;
   any_loop_ = true;
-  Optimise();
 }
 
 void SlamPipeline::CloseCameraLoop(const TrackInput& input, const TrackStep& step) {
@@ -254,13 +292,13 @@ void SlamPipeline::CloseCameraLoop(const TrackInput& input, const TrackStep& ste
   Optimise();
 }
 
-std::vector<double> SlamPipeline::GraphDistancesFrom(std::size_t key_frame) const {
+GraphReach SlamPipeline::ReachFrom(std::size_t key_frame) const {
   if (landmark_links_.empty()) {
-    return GraphDistances(map_.key_frames().size(), edges_, key_frame);
+    return reconstruct::ReachFrom(map_.key_frames().size(), edges_, key_frame);
   }
   std::vector<PoseGraphEdge> all = edges_;
   all.insert(all.end(), landmark_links_.begin(), landmark_links_.end());
-  return GraphDistances(map_.key_frames().size(), all, key_frame);
+  return reconstruct::ReachFrom(map_.key_frames().size(), all, key_frame);
 }
 
 bool SlamPipeline::LandmarksInGraph() const {
@@ -321,7 +359,7 @@ void SlamPipeline::CloseLandmarkLoops(std::size_t key_frame) {
   }
   last_landmark_search_path_m_ = frame.path_length_m;
   const std::optional<LandmarkLoop> loop = landmark_map_.FindLoop(
-      frame.T_world_base, frame.path_length_m, GraphDistancesFrom(key_frame));
+      frame.T_world_base, frame.path_length_m, ReachFrom(key_frame).distance_m);
   if (!loop) return;
   ++quality_.landmark_loops_found;
   // The old key frame the link goes to: where the matched old landmarks were last seen.
@@ -409,6 +447,10 @@ void SlamPipeline::Finish() {
   if (options_.loop_closure && map_.key_frames().size() > 1) {
     const std::size_t last = map_.key_frames().size() - 1;
     if (!any_loop_ || last_loop_key_frame_ != last) CloseLoops(last, true);
+  }
+  if (tentative_loop_) {  // no key frame is left to confirm it
+    tentative_loop_.reset();
+    ++quality_.loops_rejected_match;
   }
   if (!unchecked_loops_.empty() || LandmarksInGraph()) Optimise();
   PruneFinalLoops();

@@ -120,6 +120,9 @@ struct SlamQuality {
   std::size_t loops_rejected_match = 0;
   std::size_t loops_rejected_disagreement = 0;
   std::size_t loops_rejected_after_optimisation = 0;
+  // Tentative wide matches the next key frames confirmed (LoopCloserOptions::
+  // confirm_within_key_frames): each brings two accepted loops, itself and its confirmation.
+  std::size_t loops_confirmed = 0;
   std::size_t optimisations = 0;
   double final_cost = 0;
   // Landmarks: in the graph (two sightings or more), sightings, sightings associated by tracking,
@@ -157,18 +160,22 @@ class SlamPipeline {
   const SlamQuality& quality() const { return quality_; }
 
  private:
-  void AddGraphEdge(const TrackStep& step);
+  void AddGraphEdge(const TrackInput& input, const TrackStep& step);
   // end_of_run: the last key frame, where a survey is back at its dock: a wide search however
   // little path there was since the last one, whatever the cooldown.
   void CloseLoops(std::size_t key_frame, bool end_of_run = false);
+  // Whether key frame `key_frame` confirms the tentative loop (then both are added).
+  bool ConfirmTentativeLoop(std::size_t key_frame);
+  // Adds an accepted loop edge to the graph (not yet optimised).
+  void AddLoopEdge(const LoopAttempt& attempt);
   // Place recognition on the landmarks' constellation (LandmarkMap::FindLoop), verified by the
   // optimised graph.
   void CloseLandmarkLoops(std::size_t key_frame);
   // A loop from the camera frame at a new key frame to an old RGB-D key frame, checked against
   // the drift the path allows and then by the optimised graph like a scan-matched loop.
   void CloseCameraLoop(const TrackInput& input, const TrackStep& step);
-  // Graph distances from a key frame over the pose graph's edges and the landmark loops.
-  std::vector<double> GraphDistancesFrom(std::size_t key_frame) const;
+  // The reach of the other key frames from one over the pose graph's edges and the landmark loops.
+  GraphReach ReachFrom(std::size_t key_frame) const;
   // Whether the landmarks' sightings hold the key frames in the pose graph (BuildLandmarkTerms).
   bool LandmarksInGraph() const;
   // The landmarks in the graph as Ceres terms, and the landmark each term's index maps from.
@@ -201,7 +208,8 @@ class SlamPipeline {
   // Links from a key frame to the one whose landmarks it recognised (for graph distances only:
   // the landmark terms carry the constraint).
   std::vector<PoseGraphEdge> landmark_links_;
-  bool pending_landmark_loop_ = false;  // a landmark loop under verification
+  std::optional<TentativeLoop> tentative_loop_;  // a wide match awaiting its confirmation
+  bool pending_landmark_loop_ = false;           // a landmark loop under verification
   double last_landmark_search_path_m_ = 0;
   std::size_t last_landmark_optimised_key_frame_ = 0;
   MovingEchoFilter moving_echoes_;

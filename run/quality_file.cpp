@@ -82,6 +82,7 @@ Json SlamJson(const ReconstructionQuality& q) {
   json["loop_closures_rejected_match"] = q.loop_closures_rejected_match;
   json["loop_closures_rejected_disagreement"] = q.loop_closures_rejected_disagreement;
   json["loop_closures_rejected_after_optimisation"] = q.loop_closures_rejected_after_optimisation;
+  json["loop_closures_confirmed"] = q.loop_closures_confirmed;
   json["landmarks"] = LandmarksJson(q.landmarks);
   json["optimisations"] = q.optimisations;
   json["final_cost"] = q.final_cost;
@@ -171,6 +172,7 @@ void ReadCounts(const Json& json, ReconstructionQuality& q) {
   Read(json, "loop_closures_rejected_disagreement", q.loop_closures_rejected_disagreement);
   Read(json, "loop_closures_rejected_after_optimisation",
        q.loop_closures_rejected_after_optimisation);
+  Read(json, "loop_closures_confirmed", q.loop_closures_confirmed);
   Read(json, "optimisations", q.optimisations);
   Read(json, "final_cost", q.final_cost);
   Read(json, "frames", q.frames);

@@ -1,6 +1,7 @@
 // Loop closure: a true revisit is accepted with the right correction, also after drift beyond
 // ICP's reach (the wide search); a false candidate (a different place) is rejected, not added to
-// the graph; far along the graph a loop needs a higher matching ratio.
+// the graph; far along the graph a loop needs a higher matching ratio, or a second key frame
+// that confirms it; key frames placed by odometry alone widen the heading window.
 
 #include "reconstruct/loop_closer.hpp"
 
@@ -72,12 +73,18 @@ TEST(LoopCloser, FalseCandidateIsRejected) {
   EXPECT_FALSE(attempt.edge.has_value());
 }
 
-// Distance of every key frame from the last along the pose graph, as if no loop had been closed
-// for a long excursion.
-std::vector<double> FarAlongTheGraph(const KeyFrameMap& map, double distance_m) {
-  std::vector<double> distances(map.key_frames().size(), distance_m);
-  distances.back() = 0;
-  return distances;
+// Every key frame this far from the last along the pose graph, as if no loop had been closed for
+// a long excursion; with odometry_sigma_rad, as if key frames placed by odometry alone, together
+// that uncertain in heading, lay on the way.
+GraphReach FarAlongTheGraph(const KeyFrameMap& map, double distance_m,
+                            double odometry_sigma_rad = 0) {
+  GraphReach reach;
+  reach.distance_m.assign(map.key_frames().size(), distance_m);
+  reach.distance_m.back() = 0;
+  reach.odometry_heading_variance_rad2.assign(map.key_frames().size(),
+                                              odometry_sigma_rad * odometry_sigma_rad);
+  reach.odometry_heading_variance_rad2.back() = 0;
+  return reach;
 }
 
 TEST(LoopCloser, WideSearchFindsARevisitBeyondIcpReach) {
@@ -87,7 +94,7 @@ TEST(LoopCloser, WideSearchFindsARevisitBeyondIcpReach) {
   const PlanarPose drift{2.5, -1.5, 0.15};
   const KeyFrameMap map = MapWithRevisit(room, room, drift);
   const std::size_t last = map.key_frames().size() - 1;
-  const std::vector<double> graph = FarAlongTheGraph(map, 300);
+  const GraphReach graph = FarAlongTheGraph(map, 300);
   const LoopCloser closer({});
   EXPECT_NE(closer.TryClose(map, last, graph, /*wide=*/false).verdict, LoopVerdict::kAccepted);
   const LoopAttempt attempt = closer.TryClose(map, last, graph, /*wide=*/true);
@@ -128,6 +135,129 @@ TEST(LoopCloser, CorrectionBeyondPlausibleDriftIsRejected) {
   const KeyFrameMap map = MapWithRevisit(room, room, {0.5, 0.3, 0.05});
   const LoopAttempt attempt = LoopCloser(options).TryClose(map, map.key_frames().size() - 1);
   EXPECT_EQ(attempt.verdict, LoopVerdict::kRejectedDisagreement);
+}
+
+TEST(LoopCloser, OdometryAloneOnTheWayWidensTheHeadingWindow) {
+  // 0.3 rad of heading drift 100 m along the graph: more than a matched path of that length
+  // turns (the window is 0.11 rad), what a few key frames placed by odometry alone can turn.
+  const auto room = test::Room();
+  const KeyFrameMap map = MapWithRevisit(room, room, {0.4, -0.3, 0.3});
+  const std::size_t last = map.key_frames().size() - 1;
+  const LoopCloser closer({});
+  EXPECT_NE(closer.TryClose(map, last, FarAlongTheGraph(map, 100), /*wide=*/true).verdict,
+            LoopVerdict::kAccepted);
+  const LoopAttempt attempt =
+      closer.TryClose(map, last, FarAlongTheGraph(map, 100, 0.1), /*wide=*/true);
+  ASSERT_EQ(attempt.verdict, LoopVerdict::kAccepted);
+  const PlanarPose T_world_last =
+      Compose(map.key_frames()[attempt.edge->from].T_world_base, attempt.edge->T_from_to);
+  EXPECT_NEAR(T_world_last.x_m, 2.2, 0.01);
+  EXPECT_NEAR(T_world_last.y_m, 2.1, 0.01);
+  EXPECT_NEAR(T_world_last.theta_rad, 0.05, 0.005);
+}
+
+TEST(LoopCloser, ReachAddsTheOdometryVarianceOfTheLeastUncertainPath) {
+  // 0 - 1 - 2 - 3 matched but for 1 - 2 (odometry, sigma 0.05 rad); then a loop 3 - 0.
+  std::vector<PoseGraphEdge> edges(3);
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    edges[i].from = i;
+    edges[i].to = i + 1;
+    edges[i].T_from_to = {2, 0, 0};
+  }
+  edges[1].odometry_sigma_rad = 0.05;
+  GraphReach reach = ReachFrom(4, edges, 3);
+  EXPECT_DOUBLE_EQ(reach.distance_m[0], 6);
+  EXPECT_NEAR(reach.odometry_heading_variance_rad2[2], 0, 1e-12);
+  EXPECT_NEAR(reach.odometry_heading_variance_rad2[0], 0.0025, 1e-12);
+  PoseGraphEdge loop;
+  loop.from = 0;
+  loop.to = 3;
+  loop.T_from_to = {6, 0, 0};
+  loop.loop = true;
+  edges.push_back(loop);
+  reach = ReachFrom(4, edges, 3);
+  EXPECT_NEAR(reach.odometry_heading_variance_rad2[0], 0, 1e-12);
+  EXPECT_NEAR(reach.odometry_heading_variance_rad2[1], 0, 1e-12);
+}
+
+// The revisit of MapWithRevisit seen by two key frames 1 m apart, both stored with the same drift
+// (T_world_estimate = drift * T_world_true): the second sees `second_walls`.
+KeyFrameMap MapWithTwoRevisitKeyFrames(const std::vector<test::Segment>& walls,
+                                       const std::vector<test::Segment>& first_walls,
+                                       const std::vector<test::Segment>& second_walls,
+                                       const PlanarPose& drift) {
+  KeyFrameMap map = MapWithRevisit(walls, walls, {});
+  KeyFrameMap revisited({}, {});
+  const auto& frames = map.key_frames();
+  for (std::size_t i = 0; i + 1 < frames.size(); ++i) revisited.Add(frames[i]);
+  const PlanarPose first_true = frames.back().T_world_base;
+  const PlanarPose second_true = Compose(first_true, {1, 0, 0});
+  revisited.Add({frames.size() - 1,
+                 static_cast<TimestampNs>(frames.size() - 1),
+                 Compose(drift, first_true),
+                 PointsFrom(first_walls, first_true),
+                 frames.back().path_length_m,
+                 {}});
+  revisited.Add({frames.size(),
+                 static_cast<TimestampNs>(frames.size()),
+                 Compose(drift, second_true),
+                 PointsFrom(second_walls, second_true),
+                 frames.back().path_length_m + 1,
+                 {}});
+  return revisited;
+}
+
+TEST(LoopCloser, WideMatchOfFewEchoesIsALoopOnceTheNextKeyFrameConfirmsIt) {
+  // After key frames placed by odometry alone, beyond the nearest-candidate search and seen past
+  // a screen that hides a good part of the room: a wide match, too weak alone. The next key
+  // frame, put where it says, matches the old map there: both are loops.
+  const auto room = test::Room();
+  auto screened = room;
+  screened.push_back({{3.2, 1.0}, {3.2, 3.4}});
+  const PlanarPose drift{2.0, -1.2, 0.1};
+  const KeyFrameMap map = MapWithTwoRevisitKeyFrames(room, screened, room, drift);
+  const std::size_t first = map.key_frames().size() - 2;
+  const LoopCloser closer({});
+  // Without the odometry on the way, the drift is what a matched path has: a weak wide match is
+  // not worth confirming (in a corridor the next key frame would slide along with it).
+  EXPECT_EQ(closer.TryClose(map, first, FarAlongTheGraph(map, 200), true).verdict,
+            LoopVerdict::kRejectedMatch);
+  const LoopAttempt tentative = closer.TryClose(map, first, FarAlongTheGraph(map, 200, 0.1), true);
+  ASSERT_EQ(tentative.verdict, LoopVerdict::kTentative);
+  ASSERT_TRUE(tentative.edge.has_value());
+  EXPECT_LT(tentative.match.inlier_ratio, LoopCloserOptions{}.min_wide_matching_ratio);
+  const TentativeLoop pending{tentative, tentative.match.T_target_source};
+  const LoopAttempt confirmation = closer.Confirm(map, first + 1, pending);
+  ASSERT_EQ(confirmation.verdict, LoopVerdict::kAccepted);
+  // Both edges put their key frames at the true poses.
+  const PlanarPose T_world_first =
+      Compose(map.key_frames()[tentative.edge->from].T_world_base, tentative.edge->T_from_to);
+  EXPECT_NEAR(T_world_first.x_m, 2.2, 0.02);
+  EXPECT_NEAR(T_world_first.y_m, 2.1, 0.02);
+  const PlanarPose T_world_second =
+      Compose(map.key_frames()[confirmation.edge->from].T_world_base, confirmation.edge->T_from_to);
+  const PlanarPose second_true = Compose({2.2, 2.1, 0.05}, {1, 0, 0});
+  EXPECT_NEAR(T_world_second.x_m, second_true.x_m, 0.02);
+  EXPECT_NEAR(T_world_second.y_m, second_true.y_m, 0.02);
+  EXPECT_NEAR(T_world_second.theta_rad, second_true.theta_rad, 0.005);
+}
+
+TEST(LoopCloser, AKeyFrameThatSeesSomethingElseDoesNotConfirm) {
+  // As above, but the next key frame sees a corridor, not the room the wide match claimed.
+  const auto room = test::Room();
+  auto screened = room;
+  screened.push_back({{3.2, 1.0}, {3.2, 3.4}});
+  const std::vector<test::Segment> corridor = {
+      {{-20, 1}, {30, 1}}, {{-20, 3.2}, {30, 3.2}}, {{4, 3.2}, {4, 6}}, {{6, 1}, {6, -3}}};
+  const KeyFrameMap map = MapWithTwoRevisitKeyFrames(room, screened, corridor, {2.0, -1.2, 0.1});
+  const std::size_t first = map.key_frames().size() - 2;
+  const LoopCloser closer({});
+  const LoopAttempt tentative = closer.TryClose(map, first, FarAlongTheGraph(map, 200, 0.1), true);
+  ASSERT_EQ(tentative.verdict, LoopVerdict::kTentative);
+  const LoopAttempt confirmation =
+      closer.Confirm(map, first + 1, {tentative, tentative.match.T_target_source});
+  EXPECT_NE(confirmation.verdict, LoopVerdict::kAccepted);
+  EXPECT_FALSE(confirmation.verdict == LoopVerdict::kAccepted && confirmation.edge.has_value());
 }
 
 }  // namespace

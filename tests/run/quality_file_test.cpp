@@ -40,6 +40,7 @@ constexpr const char* kSlamText = R"json({
   "loop_closures_rejected_match": 252,
   "loop_closures_rejected_disagreement": 3,
   "loop_closures_rejected_after_optimisation": 3,
+  "loop_closures_confirmed": 1,
   "landmarks": {
     "in_graph": 38,
     "sightings": 199,
@@ -101,6 +102,7 @@ constexpr const char* kRgbdText = R"json({
   "loop_closures_rejected_match": 0,
   "loop_closures_rejected_disagreement": 0,
   "loop_closures_rejected_after_optimisation": 0,
+  "loop_closures_confirmed": 0,
   "landmarks": {
     "in_graph": 4,
     "sightings": 22,
@@ -151,6 +153,7 @@ TEST(QualityFile, ReadsEveryFieldOfASlamRun) {
   EXPECT_EQ(q->routines[3], (std::pair<std::string, std::size_t>("odometry-only", 2)));
   EXPECT_EQ(q->loop_closures_rejected, 258u);
   EXPECT_EQ(q->loop_closures_rejected_after_optimisation, 3u);
+  EXPECT_EQ(q->loop_closures_confirmed, 1u);
   EXPECT_EQ(q->landmarks.associated_by_tracking, 71u);
   EXPECT_DOUBLE_EQ(q->final_cost, 52.88249472644489);
   ASSERT_TRUE(q->scan_alignment.has_value());
