@@ -7,7 +7,9 @@
 // over a window as large as the drift can be, against all earlier key frames within reach, refined
 // by ICP. Such matches, and any loop to a key frame far along the graph, need a higher matching
 // ratio: a wide window offers more places that only resemble the old one (a facade slid along
-// itself, a row of trees). A match becomes a loop edge only if it passes checks
+// itself, a row of trees). Key frames placed by odometry alone widen the heading windows, and
+// after them a weaker wide match may still become a loop once the next key frame confirms it
+// (confirm_within_key_frames). A match becomes a loop edge only if it passes checks
 // that reject false loops before they can be optimised in:
 //   - ICP converged with a high matching ratio and a small residual;
 //   - the correction it implies agrees with the graph: no larger than the drift the tracker can
