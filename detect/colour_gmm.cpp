@@ -9,6 +9,7 @@
 #include <opencv2/ml.hpp>
 
 #include "core/error.hpp"
+#include "detect/seeded_the_rng.hpp"
 
 namespace littermap::detect {
 namespace {
@@ -48,12 +49,6 @@ cv::Mat Subsample(const cv::Mat& rows, int max_samples, std::uint64_t seed) {
   return kept;
 }
 
-// Restores the calling thread's cv::theRNG() state on scope exit.
-struct TheRngRestorer {
-  std::uint64_t saved = cv::theRNG().state;
-  ~TheRngRestorer() { cv::theRNG().state = saved; }
-};
-
 // Covariance with every eigenvalue raised to at least min_variance. A diagonal matrix has the
 // axes as eigenvectors, so it stays diagonal.
 cv::Matx33d FloorCovariance(const cv::Matx33d& covariance, double min_variance, int* floored) {
@@ -81,9 +76,7 @@ InitialMixture KMeansInit(const cv::Mat& rows, const ColourGmmOptions& options) 
   const int k = options.components;
   cv::Mat labels, centres;
   {
-    // cv::kmeans draws its k-means++ seeds from cv::theRNG(): seed it for repeatable training.
-    const TheRngRestorer restorer;
-    cv::theRNG() = cv::RNG(options.seed);
+    const SeededTheRng seeded(options.seed);  // repeatable training
     cv::kmeans(rows, k, labels,
                cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 20, 0.1), 3,
                cv::KMEANS_PP_CENTERS, centres);

@@ -2,15 +2,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
 #include <opencv2/imgproc.hpp>
 
 #include "core/error.hpp"
+#include "detect/seeded_the_rng.hpp"
 
 namespace littermap::detect {
 namespace {
+
+// The seed of GrabCut's k-means++ draws for every object (SeededTheRng).
+constexpr std::uint64_t kGrabCutSeed = 1;
 
 cv::Rect Grown(const cv::Rect& box, const ObjectClusterOptions& options, const cv::Size& image) {
   const int dx =
@@ -91,6 +96,7 @@ cv::Mat RefineWithGrabCut(const cv::Mat& colour_bgr, const cv::Mat& blob, const 
   }
   cv::Mat background_model, foreground_model;
   try {
+    const SeededTheRng seeded(kGrabCutSeed);  // the same cut whatever was refined before
     cv::grabCut(small_colour, small_mask, cv::Rect(), background_model, foreground_model, 1,
                 cv::GC_INIT_WITH_MASK);
   } catch (const cv::Exception&) {

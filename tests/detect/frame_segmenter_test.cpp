@@ -86,23 +86,35 @@ TEST(FrameSegmenter, CoresWiderThanLitterAreRejectedBeforeRefinement) {
   EXPECT_NEAR(result.objects[0].centroid_level_m.x(), 3.1, 0.06);
 }
 
-// The TUM freiburg2 desk, camera about 0.8 m above the desk and pitched ~40 degrees down: the
-// desk is the ground; the mug, the tape roll and the can standing on it are objects.
-TEST(FrameSegmenter, RealDeskFromTumIsGroundWithObjectsOnIt) {
-  const std::string dir = std::string(LITTERMAP_DATASETS_DIR) + "/tum_pair/";
-  const cv::Mat colour = cv::imread(dir + "1.png", cv::IMREAD_COLOR);
-  const cv::Mat raw = cv::imread(dir + "1_depth.png", cv::IMREAD_UNCHANGED);
-  ASSERT_FALSE(colour.empty());
-  ASSERT_FALSE(raw.empty());
+// The TUM freiburg2 desk, camera about 0.8 m above the desk and pitched ~40 degrees down, and its
+// segmentation with the desk as the ground.
+struct TumDesk {
+  cv::Mat colour;
   cv::Mat depth_mm;
-  raw.convertTo(depth_mm, CV_16U, 1000.0 / 5000.0);  // TUM: 5000 units per metre
-  const CameraIntrinsics K{520.909, 521.007, 325.141, 249.702, 640, 480};
-  const Eigen::Isometry3d T =
-      MakeIsometry({0, 0, 0.8}, {0, 40.0 * M_PI / 180.0, 0}) * T_body_optical();
+  CameraIntrinsics K{520.909, 521.007, 325.141, 249.702, 640, 480};
+  Eigen::Isometry3f T_level_camera =
+      (MakeIsometry({0, 0, 0.8}, {0, 40.0 * M_PI / 180.0, 0}) * T_body_optical()).cast<float>();
   SegmentationOptions options;
-  options.ground.max_level_offset_m = 1.0;  // the desk is not at wheel level
-  FrameSegmenter segmenter(options);
-  const FrameSegmentation result = segmenter.Segment(colour, depth_mm, K, T.cast<float>());
+};
+
+TumDesk ReadTumDesk(const std::string& frame) {
+  const std::string dir = std::string(LITTERMAP_DATASETS_DIR) + "/tum_pair/";
+  TumDesk desk;
+  desk.colour = cv::imread(dir + frame + ".png", cv::IMREAD_COLOR);
+  const cv::Mat raw = cv::imread(dir + frame + "_depth.png", cv::IMREAD_UNCHANGED);
+  if (!raw.empty()) raw.convertTo(desk.depth_mm, CV_16U, 1000.0 / 5000.0);  // 5000 per metre
+  desk.options.ground.max_level_offset_m = 1.0;  // the desk is not at wheel level
+  return desk;
+}
+
+// The desk is the ground; the mug, the tape roll and the can standing on it are objects.
+TEST(FrameSegmenter, RealDeskFromTumIsGroundWithObjectsOnIt) {
+  const TumDesk desk = ReadTumDesk("1");
+  ASSERT_FALSE(desk.colour.empty());
+  ASSERT_FALSE(desk.depth_mm.empty());
+  FrameSegmenter segmenter(desk.options);
+  const FrameSegmentation result =
+      segmenter.Segment(desk.colour, desk.depth_mm, desk.K, desk.T_level_camera);
   ASSERT_TRUE(result.ground_found);
   EXPECT_LT(result.ground_rms_m, 0.03);
   EXPECT_GT(result.ground_points, 50000u);
@@ -116,6 +128,30 @@ TEST(FrameSegmenter, RealDeskFromTumIsGroundWithObjectsOnIt) {
   for (const auto& object : result.objects) {
     EXPECT_LE(object.size_m, 0.4);
     EXPECT_GE(object.size_m, 0.03);
+  }
+}
+
+// GrabCut's colour models start from k-means++ seeds drawn from OpenCV's per-thread random
+// stream: an object's mask must not depend on how many objects were refined before it (other
+// frames, or blobs of this frame rejected before GrabCut).
+TEST(FrameSegmenter, AnObjectIsCutTheSameWhateverWasRefinedBefore) {
+  const TumDesk desk = ReadTumDesk("1");
+  const TumDesk other = ReadTumDesk("2");
+  ASSERT_FALSE(desk.colour.empty());
+  ASSERT_FALSE(other.colour.empty());
+  const auto segment = [](const TumDesk& frame) {
+    return FrameSegmenter(frame.options)
+        .Segment(frame.colour, frame.depth_mm, frame.K, frame.T_level_camera);
+  };
+  const FrameSegmentation first = segment(desk);
+  ASSERT_GT(first.refined, 0u);
+  (void)segment(other);
+  for (int i = 0; i < 1000; ++i) (void)cv::theRNG().next();  // any other use of the stream
+  const FrameSegmentation again = segment(desk);
+  ASSERT_EQ(again.objects.size(), first.objects.size());
+  for (std::size_t i = 0; i < first.objects.size(); ++i) {
+    EXPECT_EQ(again.objects[i].box, first.objects[i].box) << i;
+    EXPECT_EQ(cv::countNonZero(again.objects[i].mask != first.objects[i].mask), 0) << i;
   }
 }
 
