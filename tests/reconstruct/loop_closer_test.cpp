@@ -43,6 +43,18 @@ KeyFrameMap MapWithRevisit(const std::vector<test::Segment>& first_walls,
   return map;
 }
 
+// The loop edge places the last key frame of MapWithRevisit at its true pose (2.2, 2.1, 0.05)
+// relative to the candidate's (true) pose.
+void ExpectTheEdgePutsTheLastKeyFrameAtItsTruePose(const KeyFrameMap& map,
+                                                   const LoopAttempt& attempt) {
+  ASSERT_TRUE(attempt.edge.has_value());
+  const PlanarPose T_world_last =
+      Compose(map.key_frames()[attempt.edge->from].T_world_base, attempt.edge->T_from_to);
+  EXPECT_NEAR(T_world_last.x_m, 2.2, 0.01);
+  EXPECT_NEAR(T_world_last.y_m, 2.1, 0.01);
+  EXPECT_NEAR(T_world_last.theta_rad, 0.05, 0.005);
+}
+
 TEST(LoopCloser, TrueRevisitIsAcceptedWithTheCorrection) {
   const auto room = test::Room();
   const PlanarPose drift{0.3, -0.2, 0.04};
@@ -52,13 +64,7 @@ TEST(LoopCloser, TrueRevisitIsAcceptedWithTheCorrection) {
   ASSERT_EQ(attempt.verdict, LoopVerdict::kAccepted);
   ASSERT_TRUE(attempt.edge.has_value());
   EXPECT_EQ(attempt.edge->to, map.key_frames().size() - 1);
-  // The edge places the last key frame at its true pose (2.2, 2.1, 0.05) relative to the
-  // candidate's (true) pose.
-  const PlanarPose T_world_last =
-      Compose(map.key_frames()[attempt.edge->from].T_world_base, attempt.edge->T_from_to);
-  EXPECT_NEAR(T_world_last.x_m, 2.2, 0.01);
-  EXPECT_NEAR(T_world_last.y_m, 2.1, 0.01);
-  EXPECT_NEAR(T_world_last.theta_rad, 0.05, 0.005);
+  ExpectTheEdgePutsTheLastKeyFrameAtItsTruePose(map, attempt);
 }
 
 TEST(LoopCloser, FalseCandidateIsRejected) {
@@ -99,11 +105,7 @@ TEST(LoopCloser, WideSearchFindsARevisitBeyondIcpReach) {
   EXPECT_NE(closer.TryClose(map, last, graph, /*wide=*/false).verdict, LoopVerdict::kAccepted);
   const LoopAttempt attempt = closer.TryClose(map, last, graph, /*wide=*/true);
   ASSERT_EQ(attempt.verdict, LoopVerdict::kAccepted);
-  const PlanarPose T_world_last =
-      Compose(map.key_frames()[attempt.edge->from].T_world_base, attempt.edge->T_from_to);
-  EXPECT_NEAR(T_world_last.x_m, 2.2, 0.01);
-  EXPECT_NEAR(T_world_last.y_m, 2.1, 0.01);
-  EXPECT_NEAR(T_world_last.theta_rad, 0.05, 0.005);
+  ExpectTheEdgePutsTheLastKeyFrameAtItsTruePose(map, attempt);
 }
 
 TEST(LoopCloser, FarCandidateNeedsMoreEvidence) {
@@ -149,11 +151,7 @@ TEST(LoopCloser, OdometryAloneOnTheWayWidensTheHeadingWindow) {
   const LoopAttempt attempt =
       closer.TryClose(map, last, FarAlongTheGraph(map, 100, 0.1), /*wide=*/true);
   ASSERT_EQ(attempt.verdict, LoopVerdict::kAccepted);
-  const PlanarPose T_world_last =
-      Compose(map.key_frames()[attempt.edge->from].T_world_base, attempt.edge->T_from_to);
-  EXPECT_NEAR(T_world_last.x_m, 2.2, 0.01);
-  EXPECT_NEAR(T_world_last.y_m, 2.1, 0.01);
-  EXPECT_NEAR(T_world_last.theta_rad, 0.05, 0.005);
+  ExpectTheEdgePutsTheLastKeyFrameAtItsTruePose(map, attempt);
 }
 
 TEST(LoopCloser, ReachAddsTheOdometryVarianceOfTheLeastUncertainPath) {
