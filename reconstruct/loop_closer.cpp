@@ -109,9 +109,13 @@ LoopAttempt LoopCloser::TryNearest(const KeyFrameMap& map, std::size_t current,
   const std::size_t best = NearestOf(map, around, here);
   const bool far =
       GraphDistance(map.key_frames(), current, best, reach) >= options_.far_graph_distance_m;
-  return TryCandidate(map, current, best,
-                      far ? options_.min_wide_matching_ratio : options_.min_matching_ratio,
-                      HeadingWindowRad(map, current, best, reach));
+  LoopAttempt attempt = TryCandidate(map, current, best, options_.min_matching_ratio,
+                                     HeadingWindowRad(map, current, best, reach));
+  if (far && attempt.verdict == LoopVerdict::kAccepted &&
+      attempt.match.inlier_ratio < options_.min_wide_matching_ratio) {
+    attempt.verdict = LoopVerdict::kTentative;  // see confirm_within_key_frames
+  }
+  return attempt;
 }
 
 LoopAttempt LoopCloser::Confirm(const KeyFrameMap& map, std::size_t current,

@@ -7,9 +7,9 @@
 // over a window as large as the drift can be, against all earlier key frames within reach, refined
 // by ICP. Such matches, and any loop to a key frame far along the graph, need a higher matching
 // ratio: a wide window offers more places that only resemble the old one (a facade slid along
-// itself, a row of trees). Key frames placed by odometry alone widen the heading windows, and
-// after them a weaker wide match may still become a loop once the next key frame confirms it
-// (confirm_within_key_frames). A match becomes a loop edge only if it passes checks
+// itself, a row of trees); a weaker one may still become a loop once the next key frame confirms
+// it (confirm_within_key_frames). Key frames placed by odometry alone widen the heading windows.
+// A match becomes a loop edge only if it passes checks
 // that reject false loops before they can be optimised in:
 //   - ICP converged with a high matching ratio and a small residual;
 //   - the correction it implies agrees with the graph: no larger than the drift the tracker can
@@ -59,14 +59,19 @@ struct LoopCloserOptions {
   double odometry_drift_sigmas = 3;
   double min_correlative_score = 0.4;     // mean likelihood of the scan on the old map
   double min_wide_matching_ratio = 0.85;  // for wide matches and far candidates
-  // After a stretch where the scans did not match and odometry alone turned the heading by more
-  // than the matched path can have (OdometryHeadingRad > MatchedHeadingRad), the drift is beyond
-  // the nearest-candidate search, and an open outdoor view overlays too few echoes for a wide
-  // match on its own. There a wide match that overlays less than min_wide_matching_ratio of the
-  // scan but at least min_matching_ratio is tentative: a loop only if one of the next few key
-  // frames, put where its correction says, matches the old map there too (min_matching_ratio,
-  // ICP from that pose) and ICP moves it no further than these. Elsewhere it is rejected: in a
-  // corridor the next key frame slides along the same walls, so its agreement proves nothing.
+  // A match that overlays less than min_wide_matching_ratio of the scan but at least
+  // min_matching_ratio is tentative where that evidence alone is too weak but the loop is likely
+  // real: a loop only if one of the next few key frames, put where its correction says, matches
+  // the old map there too (min_matching_ratio, ICP from that pose) and ICP moves it no further
+  // than these. That is
+  //   - a far candidate of the nearest-candidate search: a street driven again after a long
+  //     excursion, whose open view overlays 60-85 % of the scan (the search starts from the
+  //     estimate, so the correction stays within its guesses);
+  //   - a wide match after a stretch where the scans did not match and odometry alone turned the
+  //     heading by more than the matched path can have (OdometryHeadingRad > MatchedHeadingRad):
+  //     the drift is beyond the nearest-candidate search.
+  // Other wide matches that weak are rejected: over a window of metres, in a corridor, the next
+  // key frame slides along the same walls as the match, so its agreement proves nothing.
   std::size_t confirm_within_key_frames = 6;
   double max_confirmation_disagreement_m = 0.3;
   double max_confirmation_disagreement_rad = 0.05;

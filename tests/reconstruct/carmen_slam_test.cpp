@@ -180,18 +180,22 @@ TEST(CarmenSlam, CsailRawWholeLogBeatsCartographerOnTheVerifiedRelations) {
   EXPECT_EQ(after.component.over_large_error, 0u);
 }
 
-TEST(CarmenSlam, FreiburgCampusKeepsItsHeadingAfterScansThatMatchedNothing) {
-  // With odometry noise seed 5, eight scans of an open stretch match nothing and the odometry
-  // alone turns the heading 12 degrees wrong; the robot then revisits a street it drove in the
-  // same direction 400 m before. The widened heading window and a wide match confirmed by the
-  // next key frame close that loop: ATE 0.21 m (the reference's own scans move it 0.48 m when
-  // settled, bench/slam_carmen.sh). Without them the trajectory ended 9.5 m off.
-  test::TempDir dir;
-  ASSERT_NO_FATAL_FAILURE(littermap::test::ImportCarmen("freiburg-campus", 5, dir.path()));
-  const WholeLog log = ReconstructWholeLog(dir, {});
-  EXPECT_LE(log.slam.ate_rmse_m, 0.35);
-  EXPECT_LE(log.slam.ate_max_m, 1.5);
-  EXPECT_GE(log.quality.loops_confirmed, 1u);
+// freiburg-campus outdoors, with two odometry noise seeds that used to lose the map: with seed 2
+// the robot drives a street again 400 m along the graph after a long excursion and its open view
+// overlays 60-85 % of the scan, too little for a far loop alone (a confirmed one now: ATE 0.37 ->
+// 0.22 m); with seed 5 eight scans of an open stretch match nothing and the odometry alone turns
+// the heading 12 degrees wrong, beyond the searches' windows (widened now, and a wide match
+// confirmed: 9.5 -> 0.30 m). The bound: the noise-free odometry's ATE (0.29 m; the reference's
+// own scans move it 0.48 m when settled, bench/slam_carmen.sh) + 0.03 m.
+TEST(CarmenSlam, FreiburgCampusClosesItsLoopsWhateverTheOdometryNoise) {
+  for (const int seed : {2, 5}) {
+    test::TempDir dir;
+    ASSERT_NO_FATAL_FAILURE(littermap::test::ImportCarmen("freiburg-campus", seed, dir.path()));
+    const WholeLog log = ReconstructWholeLog(dir, {});
+    EXPECT_LE(log.slam.ate_rmse_m, 0.32) << "seed " << seed;
+    EXPECT_LE(log.slam.ate_max_m, 1.5) << "seed " << seed;
+    EXPECT_GE(log.quality.loops_confirmed, 1u) << "seed " << seed;
+  }
 }
 
 }  // namespace
