@@ -111,7 +111,7 @@ enum class LoopVerdict {
   kAccepted,
   kRejectedMatch,
   kRejectedDisagreement,
-  kTentative  // a wide match awaiting its confirmation (LoopCloser::Confirm)
+  kTentative  // a match awaiting its confirmation (LoopCloser::Confirm)
 };
 
 struct LoopAttempt {

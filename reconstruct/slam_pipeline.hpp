@@ -120,7 +120,7 @@ struct SlamQuality {
   std::size_t loops_rejected_match = 0;
   std::size_t loops_rejected_disagreement = 0;
   std::size_t loops_rejected_after_optimisation = 0;
-  // Tentative wide matches the next key frames confirmed (LoopCloserOptions::
+  // Tentative matches the next key frames confirmed (LoopCloserOptions::
   // confirm_within_key_frames): each brings two accepted loops, itself and its confirmation.
   std::size_t loops_confirmed = 0;
   std::size_t optimisations = 0;
@@ -208,7 +208,7 @@ class SlamPipeline {
   // Links from a key frame to the one whose landmarks it recognised (for graph distances only:
   // the landmark terms carry the constraint).
   std::vector<PoseGraphEdge> landmark_links_;
-  std::optional<TentativeLoop> tentative_loop_;  // a wide match awaiting its confirmation
+  std::optional<TentativeLoop> tentative_loop_;  // a match awaiting its confirmation
   bool pending_landmark_loop_ = false;           // a landmark loop under verification
   double last_landmark_search_path_m_ = 0;
   std::size_t last_landmark_optimised_key_frame_ = 0;

@@ -68,7 +68,7 @@ struct ReconstructionQuality {
   std::size_t loop_closures_rejected_match = 0;
   std::size_t loop_closures_rejected_disagreement = 0;
   std::size_t loop_closures_rejected_after_optimisation = 0;
-  // Accepted loops that confirmed a tentative wide match (each brings that match in too).
+  // Accepted loops that confirmed a tentative match (each brings that match in too).
   std::size_t loop_closures_confirmed = 0;
   LandmarkQuality landmarks;
   std::size_t optimisations = 0;
