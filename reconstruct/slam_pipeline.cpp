@@ -181,12 +181,10 @@ void SlamPipeline::AddGraphEdge(const TrackInput& input, const TrackStep& step) 
   if (step.routine == Routine::kOdometryOnly) {
     edge.information = DiagonalInformation(options_.odometry_sigma_m, options_.odometry_sigma_rad);
     // How far the heading can have turned wrong over the edge, by the tracker's motion model.
-    const Prediction prediction = !step.odometry_used       ? Prediction::kConstantVelocity
-                                  : input.heading_from_gyro ? Prediction::kGyroOdometry
-                                                            : Prediction::kOdometry;
-    const Eigen::Matrix3d model = PredictionInformation(
-        options_.tracker, edge.T_from_to,
-        ToSeconds(frames[edge.to].stamp_ns - frames[edge.from].stamp_ns), prediction);
+    const Eigen::Matrix3d model =
+        PredictionInformation(options_.tracker, edge.T_from_to,
+                              ToSeconds(frames[edge.to].stamp_ns - frames[edge.from].stamp_ns),
+                              PredictionOf(step.odometry_used, input.heading_from_gyro));
     edge.odometry_sigma_rad = 1 / std::sqrt(model(2, 2));
   } else {
     edge.information = EdgeInformation(step.information, frames[edge.from].T_world_base.theta_rad,

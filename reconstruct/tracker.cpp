@@ -158,6 +158,11 @@ Tracker::Predictions Tracker::Predict(const TrackInput& input) {
   return {constant_velocity, odometry, false};
 }
 
+Prediction PredictionOf(bool odometry_used, bool heading_from_gyro) {
+  if (!odometry_used) return Prediction::kConstantVelocity;
+  return heading_from_gyro ? Prediction::kGyroOdometry : Prediction::kOdometry;
+}
+
 Eigen::Matrix3d PredictionInformation(const TrackerOptions& options, const PlanarPose& motion,
                                       double elapsed_s, Prediction prediction) {
   const double distance_m = std::hypot(motion.x_m, motion.y_m);
@@ -298,9 +303,7 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
               anchor_->heading_from_gyro ? Prediction::kGyroOdometry : Prediction::kOdometry),
           anchor_->heading_from_gyro, options_, &step);
     } else {
-      const Prediction prediction = !step.odometry_used       ? Prediction::kConstantVelocity
-                                    : input.heading_from_gyro ? Prediction::kGyroOdometry
-                                                              : Prediction::kOdometry;
+      const Prediction prediction = PredictionOf(step.odometry_used, input.heading_from_gyro);
       FuseWithPrediction(predicted,
                          PredictionInformation(options_, Between(pose_, predicted), dt, prediction),
                          prediction == Prediction::kGyroOdometry, options_, &step);

@@ -145,6 +145,9 @@ class RgbdFallback {
 
 // How a pose was predicted: odometry (its heading from the gyro or not) or constant velocity.
 enum class Prediction { kOdometry, kGyroOdometry, kConstantVelocity };
+// The prediction of a step that used the odometry or not (then constant velocity), its heading
+// turned by the gyro or not.
+Prediction PredictionOf(bool odometry_used, bool heading_from_gyro);
 // Information (x, y, theta) of a pose predicted `motion` away from a known one, elapsed_s later,
 // by the model of the tracker's options.
 Eigen::Matrix3d PredictionInformation(const TrackerOptions& options, const PlanarPose& motion,
