@@ -10,6 +10,17 @@
 namespace littermap::reconstruct {
 namespace {
 
+// `over` applied to the pose graph's edges joined by the landmark links (which count for distances
+// over the graph only), without a copy when there are none.
+template <typename Over>
+auto OverEdgesAndLinks(const std::vector<PoseGraphEdge>& edges,
+                       const std::vector<PoseGraphEdge>& links, const Over& over) {
+  if (links.empty()) return over(edges);
+  std::vector<PoseGraphEdge> all = edges;
+  all.insert(all.end(), links.begin(), links.end());
+  return over(all);
+}
+
 bool LoopFits(const PoseGraphEdge& edge, const std::vector<PlanarPose>& poses,
               const SlamOptions& options) {
   const PlanarPose residual = Between(edge.T_from_to, Between(poses[edge.from], poses[edge.to]));
@@ -291,12 +302,15 @@ void SlamPipeline::CloseCameraLoop(const TrackInput& input, const TrackStep& ste
 }
 
 GraphReach SlamPipeline::ReachFrom(std::size_t key_frame) const {
-  if (landmark_links_.empty()) {
-    return reconstruct::ReachFrom(map_.key_frames().size(), edges_, key_frame);
-  }
-  std::vector<PoseGraphEdge> all = edges_;
-  all.insert(all.end(), landmark_links_.begin(), landmark_links_.end());
-  return reconstruct::ReachFrom(map_.key_frames().size(), all, key_frame);
+  return OverEdgesAndLinks(edges_, landmark_links_, [&](const std::vector<PoseGraphEdge>& edges) {
+    return reconstruct::ReachFrom(map_.key_frames().size(), edges, key_frame);
+  });
+}
+
+std::vector<double> SlamPipeline::GraphDistancesFrom(std::size_t key_frame) const {
+  return OverEdgesAndLinks(edges_, landmark_links_, [&](const std::vector<PoseGraphEdge>& edges) {
+    return GraphDistances(map_.key_frames().size(), edges, key_frame);
+  });
 }
 
 bool SlamPipeline::LandmarksInGraph() const {
@@ -357,7 +371,7 @@ void SlamPipeline::CloseLandmarkLoops(std::size_t key_frame) {
   }
   last_landmark_search_path_m_ = frame.path_length_m;
   const std::optional<LandmarkLoop> loop = landmark_map_.FindLoop(
-      frame.T_world_base, frame.path_length_m, ReachFrom(key_frame).distance_m);
+      frame.T_world_base, frame.path_length_m, GraphDistancesFrom(key_frame));
   if (!loop) return;
   ++quality_.landmark_loops_found;
   // The old key frame the link goes to: where the matched old landmarks were last seen.

@@ -174,8 +174,10 @@ class SlamPipeline {
   // A loop from the camera frame at a new key frame to an old RGB-D key frame, checked against
   // the drift the path allows and then by the optimised graph like a scan-matched loop.
   void CloseCameraLoop(const TrackInput& input, const TrackStep& step);
-  // The reach of the other key frames from one over the pose graph's edges and the landmark loops.
+  // The reach of the other key frames from one over the pose graph's edges and the landmark loops,
+  // and their distances alone (the landmarks' place recognition needs no more).
   GraphReach ReachFrom(std::size_t key_frame) const;
+  std::vector<double> GraphDistancesFrom(std::size_t key_frame) const;
   // Whether the landmarks' sightings hold the key frames in the pose graph (BuildLandmarkTerms).
   bool LandmarksInGraph() const;
   // The landmarks in the graph as Ceres terms, and the landmark each term's index maps from.
