@@ -61,9 +61,14 @@ void LoopCloserOptions::Validate() const {
   }
   correlative.Validate();
   if (!(wide_window_m > 0) || !(wide_window_rad > 0) || !(max_wide_window_m > 0) ||
-      !(max_wide_window_rad > 0) || wide_window_per_m < 0 || wide_window_rad_per_m < 0 ||
-      !(odometry_drift_sigmas >= 0)) {
+      !(max_wide_window_rad > 0) || wide_window_per_m < 0 || wide_window_rad_per_m < 0) {
     throw UsageError("loop closure: wide search windows must be > 0");
+  }
+  if (!(odometry_drift_sigmas >= 0) || !(max_confirmation_disagreement_m >= 0) ||
+      !(max_confirmation_disagreement_rad >= 0)) {
+    throw UsageError(
+        "loop closure: odometry_drift_sigmas and the confirmation's disagreement bounds must be "
+        ">= 0");
   }
   if (!(min_wide_matching_ratio > 0 && min_wide_matching_ratio <= 1) ||
       !(min_correlative_score >= 0 && min_correlative_score <= 1) || far_graph_distance_m < 0) {
