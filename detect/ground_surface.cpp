@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 
 #include "core/error.hpp"
+#include "detect/every_nth.hpp"
 
 namespace littermap::detect {
 namespace {
@@ -65,10 +66,9 @@ std::vector<Eigen::Vector3f> Sample(const OrganizedCloud& cloud,
                                     const std::vector<unsigned char>& mask, std::size_t count,
                                     std::size_t max_points) {
   std::vector<Eigen::Vector3f> points;
-  const std::size_t step = std::max<std::size_t>(1, count / max_points);
-  std::size_t seen = 0;
+  EveryNth thinned(count / max_points);
   for (std::size_t i = 0; i < mask.size(); ++i) {
-    if (mask[i] && seen++ % step == 0) points.push_back(cloud.points_m[i]);
+    if (mask[i] && thinned.Take()) points.push_back(cloud.points_m[i]);
   }
   return points;
 }

@@ -32,20 +32,30 @@ void FillCameraCloud(const cv::Mat& depth_mm, const CameraIntrinsics& intrinsics
   coarse->is_dense = false;
   depth_m->resize(depth_mm.total());
   points->resize(depth_mm.total());
+  // The rays' slopes, one per column and per row, as BackProject computes them.
+  std::vector<float> x_slope(static_cast<std::size_t>(depth_mm.cols));
+  for (int u = 0; u < depth_mm.cols; ++u) {
+    x_slope[static_cast<std::size_t>(u)] = intrinsics.BackProject(u, 0, 1.0f).x();
+  }
   for (int v = 0; v < depth_mm.rows; ++v) {
     const auto* row = depth_mm.ptr<std::uint16_t>(v);
+    const float y_slope = intrinsics.BackProject(0, v, 1.0f).y();
+    const std::size_t first = static_cast<std::size_t>(v) * static_cast<std::size_t>(depth_mm.cols);
     for (int u = 0; u < depth_mm.cols; ++u) {
-      const std::size_t i = static_cast<std::size_t>(v) * depth_mm.cols + u;
+      const std::size_t i = first + static_cast<std::size_t>(u);
       const float z = 0.001f * row[u];
       const bool valid = z >= options.min_depth_m && z <= options.max_depth_m;
-      (*points)[i] = valid ? intrinsics.BackProject(u, v, z) : Eigen::Vector3f::Constant(kNaN);
+      (*points)[i] = valid
+                         ? Eigen::Vector3f(x_slope[static_cast<std::size_t>(u)] * z, y_slope * z, z)
+                         : Eigen::Vector3f::Constant(kNaN);
       (*depth_m)[i] = valid ? z : 0.0f;
-      if (u % step != 0 || v % step != 0 || u / step >= int(coarse_width) ||
-          v / step >= int(coarse_height)) {
-        continue;
-      }
-      (*coarse)(static_cast<std::uint32_t>(u / step), static_cast<std::uint32_t>(v / step))
-          .getVector3fMap() = (*points)[i];
+    }
+  }
+  for (std::uint32_t cv = 0; cv < coarse_height; ++cv) {
+    const std::size_t first = static_cast<std::size_t>(cv) * static_cast<std::size_t>(step) *
+                              static_cast<std::size_t>(depth_mm.cols);
+    for (std::uint32_t cu = 0; cu < coarse_width; ++cu) {
+      (*coarse)(cu, cv).getVector3fMap() = (*points)[first + cu * static_cast<std::size_t>(step)];
     }
   }
 }
@@ -195,8 +205,13 @@ void OrganizedCloudBuilder::Build(const cv::Mat& depth_mm, const CameraIntrinsic
   const int coarse_width = static_cast<int>(pcl_->normals.width);
   const int coarse_height = static_cast<int>(pcl_->normals.height);
   out->normals.resize(out->points_m.size());
+  std::vector<std::uint32_t> coarse_column(static_cast<std::size_t>(out->width));
+  for (int u = 0; u < out->width; ++u) {
+    coarse_column[static_cast<std::size_t>(u)] =
+        static_cast<std::uint32_t>(std::min(u / step, coarse_width - 1));
+  }
   for (int v = 0; v < out->height; ++v) {
-    const int cv = std::min(v / step, coarse_height - 1);
+    const auto cv = static_cast<std::uint32_t>(std::min(v / step, coarse_height - 1));
     for (int u = 0; u < out->width; ++u) {
       const auto i = static_cast<std::size_t>(out->Index(u, v));
       Eigen::Vector3f& point = out->points_m[i];
@@ -204,9 +219,7 @@ void OrganizedCloudBuilder::Build(const cv::Mat& depth_mm, const CameraIntrinsic
       normal = Eigen::Vector3f::Constant(kNaN);
       if (!(out->depth_m[i] > 0)) continue;
       point = T_level_camera * point;
-      const pcl::Normal& n =
-          pcl_->normals(static_cast<std::uint32_t>(std::min(u / step, coarse_width - 1)),
-                        static_cast<std::uint32_t>(cv));
+      const pcl::Normal& n = pcl_->normals(coarse_column[static_cast<std::size_t>(u)], cv);
       if (std::isfinite(n.normal_x))
         normal = R * Eigen::Vector3f(n.normal_x, n.normal_y, n.normal_z);
     }

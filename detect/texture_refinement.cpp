@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "detect/colour_gmm.hpp"
 #include "detect/colour_table.hpp"
+#include "detect/every_nth.hpp"
 
 namespace littermap::detect {
 namespace {
@@ -81,12 +82,12 @@ ColourTable LearnTable(const cv::Mat& colour_bgr, const cv::Mat& labels, std::ui
   const int step = std::max(1, count / options.max_training_pixels);
   std::vector<float> colours;
   colours.reserve(static_cast<std::size_t>(3 * (count / step + 1)));
-  int seen = 0;
+  EveryNth thinned(static_cast<std::size_t>(step));
   for (int v = 0; v < labels.rows; ++v) {
     const auto* row = labels.ptr<std::uint8_t>(v);
     const auto* pixels = colour_bgr.ptr<cv::Vec3b>(v);
     for (int u = 0; u < labels.cols; ++u) {
-      if (row[u] != label || seen++ % step != 0) continue;
+      if (row[u] != label || !thinned.Take()) continue;
       colours.insert(colours.end(),
                      {float(pixels[u][0]), float(pixels[u][1]), float(pixels[u][2])});
     }
@@ -138,7 +139,8 @@ std::size_t GraphCut(const cv::Mat& colour_bgr, const cv::Mat& labels,
   // The graph holds the uncertain pixels only: a few per cent of the frame.
   std::vector<int> pixel_of_node;
   std::vector<int> node(labels.total(), -1);
-  for (std::size_t i = 0; i < labels.total(); ++i) {
+  const std::size_t pixels = labels.total();
+  for (std::size_t i = 0; i < pixels; ++i) {
     if (labels.data[i] != kUncertain) continue;
     node[i] = static_cast<int>(pixel_of_node.size());
     pixel_of_node.push_back(static_cast<int>(i));
@@ -238,7 +240,8 @@ TextureRefinementResult RefineGroundByTexture(const cv::Mat& colour_bgr,
                                                   0.5, &result.non_ground_model_learnt);
   // Ground-component pixels coloured like the non-ground become uncertain.
   const auto* colour = colour_bgr.ptr<cv::Vec3b>(0);
-  for (std::size_t i = 0; i < result.labels.total(); ++i) {
+  const std::size_t pixels = result.labels.total();
+  for (std::size_t i = 0; i < pixels; ++i) {
     std::uint8_t& label = result.labels.data[i];
     if (label == kNonGround) result.non_ground.data[i] = 255;
     if (label == kGround &&
