@@ -3,6 +3,8 @@
 # (scripts/train-model.sh uses 11-18): simulate, detect with the true trajectory (detection
 # alone) and with the reconstructed one (the pipeline), and score items against the truth.
 #   bench/detect_eval.sh LITTERMAP_BINARY WORK_DIR [SEED...]     (default seeds 7 21 22 23)
+#   WORLD=samples/worlds/park_hard.yaml bench/detect_eval.sh ... 36   (another world; 36 is its own)
+#   MIN_CONFIDENCE=0.25 bench/detect_eval.sh ...   (scores only the items at least that sure)
 # Prints one table row per seed and trajectory (slam rows also give the run's ATE, since items
 # placed with it inherit its error). About 6 minutes per seed on one core.
 set -euo pipefail
@@ -12,7 +14,7 @@ shift 2
 seeds=("$@")
 if [[ ${#seeds[@]} -eq 0 ]]; then seeds=(7 21 22 23); fi
 here=$(cd "$(dirname "$0")/.." && pwd)
-world="$here/samples/worlds/park_small.yaml"
+world=${WORLD:-$here/samples/worlds/park_small.yaml}
 mkdir -p "$work"
 printf "%-5s %-10s %8s %9s %6s %6s %8s %10s %14s %6s %6s\n" seed trajectory ate_m precision \
   recall f1 "class" litter/nat "truth litter" tp fp
@@ -37,7 +39,7 @@ for seed in "${seeds[@]}"; do
     [[ $source == slam ]] && align=(--align "$run/run/trajectory.tum" "$run/truth/trajectory.tum")
     "$littermap" eval detections "$out/items.csv" "$run/truth/litter.csv" \
       --natural "$run/truth/natural.csv" --visible "$run/truth/masks/visible.csv" "${align[@]}" \
-      --json >"$out/eval.json"
+      --min-confidence "${MIN_CONFIDENCE:-0}" --json >"$out/eval.json"
     ate=0
     if [[ $source == slam ]]; then
       ate=$("$littermap" eval trajectory "$run/run/trajectory.tum" "$run/truth/trajectory.tum" \

@@ -72,6 +72,12 @@ void RegisterEvalDetectionsCommand(CLI::App& app, CliContext& context) {
       ->capture_default_str()
       ->check(FiniteRange(0.01, 100));
   detections
+      ->add_option("--min-confidence", arguments->options.min_confidence,
+                   "Leave out items less sure than this (items.csv confidence, 0 to 1), as "
+                   "`report` and `heatmap` do")
+      ->capture_default_str()
+      ->check(FiniteRange(0, 1));
+  detections
       ->add_option("--align", arguments->align,
                    "EST.tum REF.tum: carry the items into the truth's frame by the rigid alignment "
                    "of the run's trajectory onto the reference trajectory (as ATE aligns them)")

@@ -69,6 +69,10 @@ std::string ToText(const DetectionMetrics& metrics, const DetectionMetricsOption
     AppendFormat(text, "hidden objects     %zu (under %zu pixels in every mask: not truth)\n",
                  metrics.hidden_truth, options.min_visible_pixels);
   }
+  if (options.min_confidence > 0) {
+    AppendFormat(text, "below confidence   %zu items under %.2f (left out)\n",
+                 metrics.below_confidence, options.min_confidence);
+  }
   AppendFormat(text, "detected litter    %zu\n", metrics.detected_litter);
   if (metrics.ignored_detections > 0) {
     AppendFormat(text, "ignored detections %zu (at hidden litter, not scored)\n",

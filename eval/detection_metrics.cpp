@@ -175,6 +175,9 @@ void DetectionMetricsOptions::Validate() const {
   if (!(match_radius_m > 0) || !std::isfinite(match_radius_m)) {
     throw UsageError("match_radius_m must be > 0, got " + std::to_string(match_radius_m));
   }
+  if (!(min_confidence >= 0 && min_confidence <= 1)) {
+    throw UsageError("min_confidence must be from 0 to 1, got " + std::to_string(min_confidence));
+  }
 }
 
 std::size_t DetectionMetrics::Confusion(std::string_view truth_label,
@@ -231,8 +234,13 @@ DetectionMetrics EvaluateDetections(const std::vector<DetectedItem>& detected,
   DetectionMetrics metrics;
   metrics.hidden_truth = hidden.size();
   metrics.visibility_filtered = visible_pixels.has_value();
-  ScoreLitter(detected, shown, hidden, options.match_radius_m, metrics);
-  Confuse(detected, shown, hidden, options.match_radius_m, metrics);
+  std::vector<DetectedItem> sure;
+  for (const DetectedItem& item : detected) {
+    if (item.confidence >= options.min_confidence) sure.push_back(item);
+  }
+  metrics.below_confidence = detected.size() - sure.size();
+  ScoreLitter(sure, shown, hidden, options.match_radius_m, metrics);
+  Confuse(sure, shown, hidden, options.match_radius_m, metrics);
   return metrics;
 }
 
@@ -280,6 +288,7 @@ std::string ToJson(const DetectionMetrics& metrics, const DetectionMetricsOption
   json["detected_litter"] = metrics.detected_litter;
   json["ignored_detections"] = metrics.ignored_detections;
   json["hidden_truth"] = metrics.hidden_truth;
+  json["below_confidence"] = metrics.below_confidence;
   json["per_class"] = nlohmann::ordered_json::object();
   for (const ClassMetrics& c : metrics.per_class) {
     json["per_class"][c.class_name] = {{"truth", c.truth},
@@ -296,6 +305,7 @@ std::string ToJson(const DetectionMetrics& metrics, const DetectionMetricsOption
     json["confusion"][labels[t]] = row;
   }
   json["match_radius_m"] = options.match_radius_m;
+  json["min_confidence"] = options.min_confidence;
   return json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 

@@ -19,6 +19,9 @@
 //   "natural" for every natural object, "none" for detections that match nothing), columns the
 //   predicted class ("natural" for every item predicted not litter, "none" for truth objects no
 //   detection matched). Detections that only match hidden truth objects are left out.
+// - Confidence: items less sure than min_confidence are left out before anything is matched, as
+//   the report and the heatmap leave them out (their --min-confidence), so a threshold's
+//   precision and recall are what the park staff would see.
 
 #include <cstddef>
 #include <filesystem>
@@ -57,6 +60,7 @@ using VisiblePixels = std::unordered_map<std::string, std::size_t>;
 struct DetectionMetricsOptions {
   double match_radius_m = 0.3;
   std::size_t min_visible_pixels = 100;  // with VisiblePixels: smaller objects are not truth
+  double min_confidence = 0.0;           // items less sure are left out (0 to 1)
   void Validate() const;
 };
 
@@ -77,6 +81,7 @@ struct DetectionMetrics {
   std::size_t false_negatives = 0;
   std::size_t ignored_detections = 0;  // predicted litter at truth litter the filter hid
   std::size_t hidden_truth = 0;        // truth objects (litter and natural) the filter dropped
+  std::size_t below_confidence = 0;    // items (litter and natural) under min_confidence
   bool visibility_filtered = false;    // truth was filtered by visible pixels
   double precision = 1.0;
   double recall = 1.0;

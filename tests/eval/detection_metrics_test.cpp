@@ -1,7 +1,7 @@
 // Detection metrics against small scenes with known answers: matching radius and one-to-one
-// matching, class confusion, natural look-alikes taken for litter, the visibility filter, and
-// the CSV readers' error messages. Counts are exact; ratios are exact fractions, compared with a
-// 1e-12 tolerance (a few floating-point divisions).
+// matching, class confusion, natural look-alikes taken for litter, the visibility filter, the
+// confidence threshold, and the CSV readers' error messages. Counts are exact; ratios are exact
+// fractions, compared with a 1e-12 tolerance (a few floating-point divisions).
 
 #include "eval/detection_metrics.hpp"
 
@@ -175,6 +175,36 @@ TEST(DetectionMetrics, NaturalTakenForLitterIsAFalsePositive) {
   EXPECT_EQ(metrics.Confusion("none", "cup"), 0u);
 }
 
+TEST(DetectionMetrics, ItemsLessSureThanTheThresholdAreLeftOut) {
+  const std::vector<TruthObject> truth = {Litter("1", "can", 0, 0), Litter("2", "cup", 3, 0),
+                                          Natural("3", "mushroom", 6, 0)};
+  std::vector<DetectedItem> detected = {Item("can", 0, 0), Item("cup", 3, 0),
+                                        Item("cup", 6, 0),  // the mushroom taken for a cup
+                                        Item("natural", 3.1, 0, false)};
+  detected[0].confidence = 0.9;
+  detected[1].confidence = 0.3;  // just at the threshold: kept
+  detected[2].confidence = 0.2;
+  detected[3].confidence = 0.1;
+  const DetectionMetrics all = EvaluateDetections(detected, truth, {});
+  EXPECT_EQ(all.false_positives, 1u);
+  EXPECT_EQ(all.below_confidence, 0u);
+  DetectionMetricsOptions options;
+  options.min_confidence = 0.3;
+  const DetectionMetrics sure = EvaluateDetections(detected, truth, options);
+  EXPECT_EQ(sure.below_confidence, 2u);
+  EXPECT_EQ(sure.detected_litter, 2u);
+  EXPECT_EQ(sure.true_positives, 2u);
+  EXPECT_EQ(sure.false_positives, 0u);
+  EXPECT_NEAR(sure.precision, 1.0, kTolerance);
+  // The natural item left out no longer pairs with anything; the mushroom is unmatched.
+  EXPECT_EQ(sure.Confusion("natural", "none"), 1u);
+  EXPECT_EQ(sure.Confusion("natural", "cup"), 0u);
+  options.min_confidence = 0.95;
+  const DetectionMetrics none = EvaluateDetections(detected, truth, options);
+  EXPECT_EQ(none.detected_litter, 0u);
+  EXPECT_NEAR(none.recall, 0.0, kTolerance);
+}
+
 TEST(DetectionMetrics, VisibilityFilterDropsObjectsTheCameraBarelySaw) {
   const std::vector<TruthObject> truth = {Litter("1", "can", 0, 0), Litter("2", "can", 5, 0),
                                           Litter("3", "cup", 10, 0), Natural("4", "leaf", 15, 0)};
@@ -237,6 +267,9 @@ TEST(DetectionMetrics, UnknownLitterClassGetsItsOwnRow) {
 TEST(DetectionMetrics, InvalidRadiusIsAUsageError) {
   DetectionMetricsOptions options;
   options.match_radius_m = 0;
+  EXPECT_THROW(EvaluateDetections({}, {}, options), UsageError);
+  options = {};
+  options.min_confidence = 1.5;
   EXPECT_THROW(EvaluateDetections({}, {}, options), UsageError);
 }
 
