@@ -4,7 +4,8 @@
 # crops labelled from their ground truth, and `littermap train` on all of them.
 #   scripts/train-model.sh LITTERMAP_BINARY WORK_DIR MODEL_OUT [SEED...]
 # Seeds default to 11-18; 7 (the demo's world) and 21-23 are kept for testing. About 3 minutes
-# per seed on one core.
+# per seed on one core; JOBS (default: the number of cores) seeds are simulated at once. Every
+# seed's crops are the same whichever runs first, so the model is too.
 set -euo pipefail
 littermap=$1
 work=$2
@@ -14,15 +15,20 @@ seeds=("$@")
 if [[ ${#seeds[@]} -eq 0 ]]; then seeds=(11 12 13 14 15 16 17 18); fi
 here=$(cd "$(dirname "$0")/.." && pwd)
 world="$here/samples/worlds/park_small.yaml"
+jobs=${JOBS:-$(nproc)}
 mkdir -p "$work"
+
+cut_samples() {
+  local seed=$1 run="$work/seed$1"
+  if [[ -f "$run/samples/labels.csv" ]]; then return 0; fi
+  echo "== seed $seed: simulating and cutting samples"
+  "$littermap" simulate "$world" -o "$run/bag" --truth "$run/truth" --seed "$seed" --quiet
+  "$littermap" samples "$run/bag" --truth "$run/truth" -o "$run/samples" --every 3 --quiet
+}
+export -f cut_samples
+export littermap work world
+printf '%s\n' "${seeds[@]}" | xargs -P "$jobs" -I{} bash -c 'cut_samples {}'
+
 sample_dirs=()
-for seed in "${seeds[@]}"; do
-  run="$work/seed$seed"
-  if [[ ! -f "$run/samples/labels.csv" ]]; then
-    echo "== seed $seed: simulating and cutting samples"
-    "$littermap" simulate "$world" -o "$run/bag" --truth "$run/truth" --seed "$seed" --quiet
-    "$littermap" samples "$run/bag" --truth "$run/truth" -o "$run/samples" --every 3 --quiet
-  fi
-  sample_dirs+=("$run/samples")
-done
+for seed in "${seeds[@]}"; do sample_dirs+=("$work/seed$seed/samples"); done
 "$littermap" train "${sample_dirs[@]}" -o "$model"
