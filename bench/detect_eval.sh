@@ -5,6 +5,7 @@
 #   bench/detect_eval.sh LITTERMAP_BINARY WORK_DIR [SEED...]     (default seeds 7 21 22 23)
 #   WORLD=samples/worlds/park_hard.yaml bench/detect_eval.sh ... 36   (another world; 36 is its own)
 #   MIN_CONFIDENCE=0.25 bench/detect_eval.sh ...   (scores only the items at least that sure)
+#   MODEL=other.yml.gz bench/detect_eval.sh ...      (another classifier than the shipped one)
 # Prints one table row per seed and trajectory (slam rows also give the run's ATE, since items
 # placed with it inherit its error). About 6 minutes per seed on one core.
 set -euo pipefail
@@ -16,6 +17,8 @@ if [[ ${#seeds[@]} -eq 0 ]]; then seeds=(7 21 22 23); fi
 here=$(cd "$(dirname "$0")/.." && pwd)
 world=${WORLD:-$here/samples/worlds/park_small.yaml}
 mkdir -p "$work"
+model=()
+if [[ -n ${MODEL:-} ]]; then model=(--model "$MODEL"); fi
 printf "%-5s %-10s %8s %9s %6s %6s %8s %10s %14s %6s %6s\n" seed trajectory ate_m precision \
   recall f1 "class" litter/nat "truth litter" tp fp
 for seed in "${seeds[@]}"; do
@@ -32,7 +35,7 @@ for seed in "${seeds[@]}"; do
     [[ $source == slam ]] && trajectory="$run/run/trajectory.tum"
     if [[ ! -f "$out/items.csv" ]]; then
       "$littermap" detect "$run/bag" --run "$run/run" -o "$out" --trajectory "$trajectory" \
-        --quiet >"$out.log"
+        "${model[@]}" --quiet >"$out.log"
     fi
     # Items of the reconstructed run are in its map frame: align them as ATE aligns trajectories.
     align=()
