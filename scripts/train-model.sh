@@ -3,16 +3,18 @@
 # surveys of the sample park with other seeds (other worlds: terrain, litter, look-alikes), object
 # crops labelled from their ground truth, and `littermap train` on all of them.
 #   scripts/train-model.sh LITTERMAP_BINARY WORK_DIR MODEL_OUT [SEED...]
-# Seeds default to 11-18; 7 (the demo's world) and 21-23 are kept for testing. About 3 minutes
-# per seed on one core; JOBS (default: the number of cores) seeds are simulated at once. Every
-# seed's crops are the same whichever runs first, so the model is too.
+# Seeds default to 11-18 and 41-56; 7 (the demo's world), 21-23 and 101-103 are kept for
+# testing. About 3 minutes per seed on one core; JOBS (default: the number of cores) seeds are
+# simulated at once. Every seed's crops are the same whichever runs first, so the model is too.
 set -euo pipefail
 littermap=$1
 work=$2
 model=$3
 shift 3
 seeds=("$@")
-if [[ ${#seeds[@]} -eq 0 ]]; then seeds=(11 12 13 14 15 16 17 18); fi
+if [[ ${#seeds[@]} -eq 0 ]]; then
+  seeds=(11 12 13 14 15 16 17 18 41 42 43 44 45 46 47 48 49 50 51 52 53 54 55 56)
+fi
 here=$(cd "$(dirname "$0")/.." && pwd)
 world="$here/samples/worlds/park_small.yaml"
 jobs=${JOBS:-$(nproc)}
