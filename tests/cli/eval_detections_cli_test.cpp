@@ -54,7 +54,8 @@ TEST(EvalDetectionsCli, JsonHasStableKeysAndRightFigures) {
   for (const char* key :
        {"precision", "recall", "f1", "true_positives", "false_positives", "false_negatives",
         "class_accuracy", "litter_natural_accuracy", "litter_natural_pairs", "truth_litter",
-        "detected_litter", "per_class", "confusion", "match_radius_m"}) {
+        "detected_litter", "below_confidence", "per_class", "confusion", "match_radius_m",
+        "min_confidence"}) {
     EXPECT_TRUE(json.contains(key)) << key;
   }
   // Bottle 3 (12 pixels) is left out. Litter: a and b match cans 1 and 2; c and e are false.
@@ -87,7 +88,7 @@ TEST(EvalDetectionsCli, JsonHasStableKeysAndRightFigures) {
   EXPECT_EQ(confusion.at("bottle").at("none"), 0);  // left out by the visibility filter
 }
 
-TEST(EvalDetectionsCli, MinPixelsAndRadiusChangeTheAnswer) {
+TEST(EvalDetectionsCli, MinPixelsRadiusAndConfidenceChangeTheAnswer) {
   TempDir dir;
   WriteScene(dir);
   const auto all = RunLittermap(Arguments(dir) + " --min-pixels 10 --json");
@@ -96,6 +97,13 @@ TEST(EvalDetectionsCli, MinPixelsAndRadiusChangeTheAnswer) {
   const auto tight = RunLittermap(Arguments(dir) + " --match-radius 0.15 --json");
   ASSERT_EQ(tight.exit_code, 0) << tight.output;
   EXPECT_EQ(nlohmann::json::parse(tight.output).at("true_positives"), 1);  // b is 0.2 m off
+  // c (0.6, the leaf taken for a cup) and e (0.5, the bag at nothing) are less sure than 0.65.
+  const auto sure = RunLittermap(Arguments(dir) + " --min-confidence 0.65 --json");
+  ASSERT_EQ(sure.exit_code, 0) << sure.output;
+  const auto sure_json = nlohmann::json::parse(sure.output);
+  EXPECT_EQ(sure_json.at("below_confidence"), 2);
+  EXPECT_EQ(sure_json.at("false_positives"), 0);
+  EXPECT_EQ(sure_json.at("true_positives"), 2);
 }
 
 TEST(EvalDetectionsCli, TextShowsTheTables) {
@@ -138,6 +146,7 @@ TEST(EvalDetectionsCli, BadArgumentsExitOne) {
   const std::string files = (dir / "items.csv").string() + " " + (dir / "litter.csv").string();
   EXPECT_EQ(RunLittermap("eval detections " + files + " --min-pixels 10").exit_code, 1);
   EXPECT_EQ(RunLittermap("eval detections " + files + " --match-radius 0").exit_code, 1);
+  EXPECT_EQ(RunLittermap("eval detections " + files + " --min-confidence 1.5").exit_code, 1);
   EXPECT_EQ(RunLittermap("eval detections " + (dir / "items.csv").string()).exit_code, 1);
 }
 
