@@ -549,9 +549,9 @@ std::vector<PoseGraphEdge> SlamPipeline::KeyFrameOdometry() const {
     edge.from = k - 1;
     edge.to = k;
     edge.T_from_to = Between(*a.T_odom_base, *b.T_odom_base);
-    edge.information = PredictionInformation(
-        options_.tracker, edge.T_from_to, ToSeconds(b.stamp_ns - a.stamp_ns),
-        b.heading_from_gyro ? Prediction::kGyroOdometry : Prediction::kOdometry);
+    edge.information =
+        PredictionInformation(options_.tracker, edge.T_from_to, ToSeconds(b.stamp_ns - a.stamp_ns),
+                              PredictionOf(b.odometry_used, b.heading_from_gyro));
     found[k - 1] = true;
   }
   std::vector<PoseGraphEdge> kept;

@@ -297,10 +297,9 @@ TrackStep Tracker::Track(std::size_t scan_index, const TrackInput& input) {
           Compose(anchor_->T_world_base, Between(anchor_->T_odom_base, *input.T_odom_base));
       FuseWithPrediction(
           from_anchor,
-          PredictionInformation(
-              options_, Between(anchor_->T_world_base, from_anchor),
-              ToSeconds(input.stamp_ns - anchor_->stamp_ns),
-              anchor_->heading_from_gyro ? Prediction::kGyroOdometry : Prediction::kOdometry),
+          PredictionInformation(options_, Between(anchor_->T_world_base, from_anchor),
+                                ToSeconds(input.stamp_ns - anchor_->stamp_ns),
+                                PredictionOf(true, anchor_->heading_from_gyro)),
           anchor_->heading_from_gyro, options_, &step);
     } else {
       const Prediction prediction = PredictionOf(step.odometry_used, input.heading_from_gyro);
@@ -374,9 +373,9 @@ bool Tracker::OdometryAgrees(const TrackInput& input, const PlanarPose& T_world_
   }
   const PlanarPose moved = Between(anchor_->T_odom_base, *input.T_odom_base);
   const PlanarPose predicted = Compose(anchor_->T_world_base, moved);
-  const Eigen::Matrix3d information = PredictionInformation(
-      options_, moved, ToSeconds(input.stamp_ns - anchor_->stamp_ns),
-      anchor_->heading_from_gyro ? Prediction::kGyroOdometry : Prediction::kOdometry);
+  const Eigen::Matrix3d information =
+      PredictionInformation(options_, moved, ToSeconds(input.stamp_ns - anchor_->stamp_ns),
+                            PredictionOf(true, anchor_->heading_from_gyro));
   // PredictionInformation is diagonal and the same in x and y.
   const double variance = 1 / information(0, 0) + sigma_m * sigma_m;
   const double dx = T_world_base.x_m - predicted.x_m, dy = T_world_base.y_m - predicted.y_m;
