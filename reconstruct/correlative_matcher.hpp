@@ -1,14 +1,15 @@
 #pragma once
-// Correlative scan matching (Olson, ICRA 2009; the two-level branch and bound of Hess et al.,
-// ICRA 2016, "Real-time loop closure in 2D LIDAR SLAM"): an exhaustive search over a window of
+// Correlative scan matching (Olson, ICRA 2009) with the multi-level branch and bound of Hess et
+// al., ICRA 2016, "Real-time loop closure in 2D LIDAR SLAM": a search over a window of
 // translations and rotations for the pose under which the scan's points fall on the target's
 // likelihood field. Unlike ICP it does not need an initial guess inside the basin of attraction,
 // so it finds a revisited place after the tracker has drifted metres and degrees; ICP then
 // refines the pose it returns.
-// Coarse translations 2^k cells apart are scored with a grid that holds, per cell, the maximum of
-// the likelihood over the 2^k x 2^k cells ahead of it: an upper bound of every fine translation
-// they cover, so the coarse candidates are expanded best first and the search stops when the
-// bound falls below the best fine score (exact, not approximate).
+// The search is exact, not approximate. A candidate at height h stands for the 2^h x 2^h fine
+// translations ahead of it, and is scored on a precomputed grid that holds, per cell, the maximum
+// of the likelihood over the 2^h x 2^h cells ahead of it: an upper bound of every translation it
+// stands for. Candidates are split into four of height h - 1, best first and depth first, and
+// a branch whose bound is no better than the best fine score found is not expanded.
 
 #include <cstddef>
 
@@ -19,20 +20,26 @@ namespace littermap::reconstruct {
 
 struct CorrelativeOptions {
   double cell_size_m = 0.1;
-  double sigma_m = 0.1;            // of the likelihood field around each target point
-  int coarse_cells = 8;            // a coarse translation step, in cells
+  double sigma_m = 0.1;  // of the likelihood field around each target point
+  // The highest candidates stand for 2^depth x 2^depth cells (Cartographer's default, 7, is 12.8 m
+  // at 10 cm cells); a smaller window starts lower. 0 scores every pose of the window.
+  int max_branch_and_bound_depth = 7;
   double source_voxel_m = 0.3;     // the scan's points are thinned to this spacing
   double max_source_range_m = 12;  // far points make the rotation step small for little gain
   std::size_t max_source_points = 100;
+  // A pose must score above this mean likelihood to be found: branches that cannot reach it are
+  // not searched (0: the best pose whatever its score).
+  double min_score = 0;
   void Validate() const;
 };
 
 struct CorrelativeResult {
   bool found = false;
   PlanarPose T_target_source;
-  double score = 0;  // mean likelihood of the scan's points at the pose, in [0, 1]
-  std::size_t coarse_candidates = 0;
-  std::size_t fine_evaluations = 0;
+  double score = 0;  // mean likelihood of the scan's points at the pose, in [0, 1]; 0 if not found
+  std::size_t window_poses = 0;       // translations x rotations of the window
+  std::size_t bound_evaluations = 0;  // candidates scored above the fine level
+  std::size_t fine_evaluations = 0;   // poses scored
 };
 
 // Searches T_target_source within +-window_m (x and y) and +-window_rad of `initial`. Source

@@ -70,11 +70,9 @@ void LoopCloserOptions::Validate() const {
         "loop closure: odometry_drift_sigmas and the confirmation's disagreement bounds must be "
         ">= 0");
   }
-  if (!(min_wide_matching_ratio > 0 && min_wide_matching_ratio <= 1) ||
-      !(min_correlative_score >= 0 && min_correlative_score <= 1) || far_graph_distance_m < 0) {
+  if (!(min_wide_matching_ratio > 0 && min_wide_matching_ratio <= 1) || far_graph_distance_m < 0) {
     throw UsageError(
-        "loop closure: min_wide_matching_ratio must be in (0, 1], min_correlative_score in "
-        "[0, 1], far_graph_distance_m >= 0");
+        "loop closure: min_wide_matching_ratio must be in (0, 1], far_graph_distance_m >= 0");
   }
 }
 
@@ -269,7 +267,7 @@ LoopAttempt LoopCloser::TryWide(const KeyFrameMap& map, std::size_t current,
                                                     window_m, window_rad, options_.correlative);
   LoopAttempt attempt;
   attempt.candidate = reachable.front();
-  if (!coarse.found || coarse.score < options_.min_correlative_score) {
+  if (!coarse.found) {
     attempt.verdict = LoopVerdict::kRejectedMatch;
     return attempt;
   }

@@ -45,7 +45,7 @@ struct LoopCloserOptions {
   double guess_step_rad = 0.12;
   // The wide search: its window grows with the distance along the pose graph between the key
   // frames (the drift the tracker can have gathered between them), up to a limit.
-  CorrelativeOptions correlative;
+  CorrelativeOptions correlative{.min_score = 0.4};  // mean likelihood of the scan on the old map
   double min_wide_window_m = 2;  // smaller drift: the nearest-candidate search covers it
   double wide_window_m = 0.5;
   double wide_window_per_m = 0.03;
@@ -57,7 +57,6 @@ struct LoopCloserOptions {
   // many standard deviations of the odometry model over them: a few in a row can turn it more
   // than a long matched path, and the searches' heading windows widen for it.
   double odometry_drift_sigmas = 3;
-  double min_correlative_score = 0.4;     // mean likelihood of the scan on the old map
   double min_wide_matching_ratio = 0.85;  // for wide matches and far candidates
   // A match that overlays less than min_wide_matching_ratio of the scan but at least
   // min_matching_ratio is tentative where that evidence alone is too weak but the loop is likely

@@ -26,7 +26,7 @@ struct MapRegistrationOptions {
   // a run that maps more of the park than the site map is not refused for it. At least this
   // many such points are needed.
   std::size_t min_overlap_points = 100;
-  CorrelativeOptions correlative{0.1, 0.15, 8, 0.4, 1e6, 400};
+  CorrelativeOptions correlative{0.1, 0.15, 7, 0.4, 1e6, 400};
   IcpOptions icp;
   void Validate() const;
 };
