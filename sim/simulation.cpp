@@ -102,7 +102,12 @@ ImuSample Simulation::Imu(std::size_t k) const {
   sample.orientation = Eigen::Quaterniond(
       RotationFromRpy({rpy.roll_rad + sigma * rng.Normal(), rpy.pitch_rad + sigma * rng.Normal(),
                        odometry_[i].theta_rad}));
-  const std::size_t j = std::min(static_cast<std::size_t>(odom_t), drive_.states.size() - 1);
+  // The drive state at the sample's time holds the turn rate of the step that ended there. The
+  // time in steps is k / imu_rate * odometry_rate: in floating point it can come out a hair
+  // below a whole step, and the step before's rate then stood in for a sample at a turn's
+  // start or end (a whole step at 1 rad/s: 1.1 degrees that the gyro never turned).
+  const std::size_t j =
+      std::min(static_cast<std::size_t>(std::floor(odom_t + 1e-6)), drive_.states.size() - 1);
   sample.angular_velocity_radps = {0.01 * rng.Normal(), 0.01 * rng.Normal(),
                                    drive_.states[j].angular_radps + 0.01 * rng.Normal()};
   sample.linear_acceleration_mps2 =
