@@ -71,9 +71,12 @@ TEST(LandmarkLoopCli, TrunksCloseTheLoopBetweenLanes) {
   const double ate = Ate(d / "run" / "trajectory.tum", truth);
   const double plain_ate = Ate(d / "plain" / "trajectory.tum", truth);
   const double odometry_ate = Ate(d / "run" / "odometry.tum", truth);
-  // Measured 0.011 m with landmarks, 0.38 m without, 0.55 m odometry.
+  // Measured 0.011 m with landmarks, 0.069 m without, 0.40 m odometry. Without landmarks the
+  // survey misses the small parks' 5 cm; the gyro holds the heading well enough that it does
+  // not miss by much (0.38 m while the simulated gyro turned a whole step wrong now and then).
   EXPECT_LT(ate, 0.05);
-  EXPECT_GT(plain_ate, 0.1);
+  EXPECT_GT(plain_ate, 0.05);
+  EXPECT_LT(ate, plain_ate / 3);
   EXPECT_LT(ate, odometry_ate);
 }
 
