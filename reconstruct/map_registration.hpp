@@ -26,7 +26,11 @@ struct MapRegistrationOptions {
   // a run that maps more of the park than the site map is not refused for it. At least this
   // many such points are needed.
   std::size_t min_overlap_points = 100;
-  CorrelativeOptions correlative{0.1, 0.15, 7, 0.4, 1e6, 400};
+  CorrelativeOptions correlative{.cell_size_m = 0.1,
+                                 .sigma_m = 0.15,
+                                 .source_voxel_m = 0.4,
+                                 .max_source_range_m = 1e6,
+                                 .max_source_points = 400};
   IcpOptions icp;
   void Validate() const;
 };
