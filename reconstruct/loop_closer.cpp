@@ -5,6 +5,8 @@
 #include <limits>
 #include <vector>
 
+#include <Eigen/Eigenvalues>
+
 #include "core/error.hpp"
 
 namespace littermap::reconstruct {
@@ -39,6 +41,16 @@ std::size_t NearestOf(const KeyFrameMap& map, const std::vector<std::size_t>& ca
   return best;
 }
 
+// Standard deviation of a pose estimate with this information along its least constrained
+// direction, the heading scaled to metres by lever_arm_m; infinite if a direction is free.
+double WeakestSigmaM(const Eigen::Matrix3d& information, double lever_arm_m) {
+  const Eigen::Matrix3d scale = Eigen::Vector3d(1, 1, 1 / lever_arm_m).asDiagonal();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(scale * information * scale,
+                                                              Eigen::EigenvaluesOnly);
+  const double weakest = solver.eigenvalues()(0);
+  return weakest > 0 ? 1 / std::sqrt(weakest) : std::numeric_limits<double>::infinity();
+}
+
 }  // namespace
 
 GraphReach ReachFrom(std::size_t key_frames, const std::vector<PoseGraphEdge>& edges,
@@ -60,6 +72,9 @@ void LoopCloserOptions::Validate() const {
     throw UsageError("loop closure: min_matching_ratio must be in (0, 1]");
   }
   correlative.Validate();
+  if (!(max_weakest_sigma_m > 0) || !(heading_lever_arm_m > 0)) {
+    throw UsageError("loop closure: max_weakest_sigma_m and heading_lever_arm_m must be > 0");
+  }
   if (!(wide_window_m > 0) || !(wide_window_rad > 0) || !(max_wide_window_m > 0) ||
       !(max_wide_window_rad > 0) || wide_window_per_m < 0 || wide_window_rad_per_m < 0) {
     throw UsageError("loop closure: wide search windows must be > 0");
@@ -300,6 +315,11 @@ LoopAttempt LoopCloser::Judge(const KeyFrameMap& map, std::size_t current, std::
   if (!match.converged || match.inlier_ratio < min_ratio ||
       match.rms_residual_m > options_.max_rms_residual_m) {
     attempt.verdict = LoopVerdict::kRejectedMatch;
+    return attempt;
+  }
+  if (WeakestSigmaM(match.information, options_.heading_lever_arm_m) >
+      options_.max_weakest_sigma_m) {
+    attempt.verdict = LoopVerdict::kRejectedDegenerate;
     return attempt;
   }
   // Agreement with the graph: the correction must be explainable by tracking drift (for a wide

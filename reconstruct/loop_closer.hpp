@@ -12,6 +12,7 @@
 // A match becomes a loop edge only if it passes checks
 // that reject false loops before they can be optimised in:
 //   - ICP converged with a high matching ratio and a small residual;
+//   - the match pins the pose down in every direction (not degenerate);
 //   - the correction it implies agrees with the graph: no larger than the drift the tracker can
 //     have accumulated over the path between the two key frames;
 // and, after optimisation (in the caller), the loop edge must fit the optimised graph; at the end
@@ -35,6 +36,14 @@ struct LoopCloserOptions {
   std::size_t submap_half_window = 6;  // key frames each side of the candidate
   double min_matching_ratio = 0.6;
   double max_rms_residual_m = 0.05;
+  // A match must pin the pose down in every direction: the standard deviation of its estimate
+  // (the inverse of IcpResult::information) along its least constrained direction of
+  // (x, y, heading x heading_lever_arm_m) at most this. The arc of one trunk, or a few, fits as
+  // well turned about them: ICP then stops wherever its start put it, with a full overlay and a
+  // small residual, and the loop would bend the graph by the tracker's drift or more (a false
+  // loop at a park's dock, where the scan sees a trunk or two).
+  double max_weakest_sigma_m = 0.05;
+  double heading_lever_arm_m = 5;  // a heading error turns the points this far away by as much
   // Drift bound for the agreement check: base + per metre of path between the key frames.
   double max_correction_m = 0.4;
   double max_correction_per_m = 0.05;
@@ -110,7 +119,8 @@ enum class LoopVerdict {
   kAccepted,
   kRejectedMatch,
   kRejectedDisagreement,
-  kTentative  // a match awaiting its confirmation (LoopCloser::Confirm)
+  kRejectedDegenerate,  // the match leaves the pose free in some direction
+  kTentative            // a match awaiting its confirmation (LoopCloser::Confirm)
 };
 
 struct LoopAttempt {

@@ -161,6 +161,8 @@ const OptionSetters<O>& Setters() {
        Set<double>([](O& o) -> double& { return o.slam.loops.min_matching_ratio; })},
       {"loop_max_rms_residual_m",
        Set<double>([](O& o) -> double& { return o.slam.loops.max_rms_residual_m; })},
+      {"loop_max_weakest_sigma_m",
+       Set<double>([](O& o) -> double& { return o.slam.loops.max_weakest_sigma_m; })},
       {"loop_cooldown_key_frames",
        Set<std::size_t>([](O& o) -> std::size_t& { return o.slam.loop_cooldown_key_frames; })},
       {"loop_loss_scale",

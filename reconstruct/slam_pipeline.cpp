@@ -226,6 +226,10 @@ void SlamPipeline::CloseLoops(std::size_t key_frame, bool end_of_run) {
       ++quality_.loop_candidates;
       ++quality_.loops_rejected_disagreement;
       return;
+    case LoopVerdict::kRejectedDegenerate:
+      ++quality_.loop_candidates;
+      ++quality_.loops_rejected_degenerate;
+      return;
     case LoopVerdict::kTentative:
       ++quality_.loop_candidates;
       if (tentative_loop_) ++quality_.loops_rejected_match;  // the older one was not confirmed

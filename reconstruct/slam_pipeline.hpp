@@ -119,6 +119,7 @@ struct SlamQuality {
   std::size_t loops_accepted = 0;
   std::size_t loops_rejected_match = 0;
   std::size_t loops_rejected_disagreement = 0;
+  std::size_t loops_rejected_degenerate = 0;  // the match left the pose free in some direction
   std::size_t loops_rejected_after_optimisation = 0;
   // Tentative matches the next key frames confirmed (LoopCloserOptions::
   // confirm_within_key_frames): each brings two accepted loops, itself and its confirmation.

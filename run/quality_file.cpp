@@ -81,6 +81,7 @@ Json SlamJson(const ReconstructionQuality& q) {
   json["loop_closures_rejected"] = q.loop_closures_rejected;
   json["loop_closures_rejected_match"] = q.loop_closures_rejected_match;
   json["loop_closures_rejected_disagreement"] = q.loop_closures_rejected_disagreement;
+  json["loop_closures_rejected_degenerate"] = q.loop_closures_rejected_degenerate;
   json["loop_closures_rejected_after_optimisation"] = q.loop_closures_rejected_after_optimisation;
   json["loop_closures_confirmed"] = q.loop_closures_confirmed;
   json["landmarks"] = LandmarksJson(q.landmarks);
@@ -170,6 +171,7 @@ void ReadCounts(const Json& json, ReconstructionQuality& q) {
   Read(json, "loop_closures_rejected", q.loop_closures_rejected);
   Read(json, "loop_closures_rejected_match", q.loop_closures_rejected_match);
   Read(json, "loop_closures_rejected_disagreement", q.loop_closures_rejected_disagreement);
+  Read(json, "loop_closures_rejected_degenerate", q.loop_closures_rejected_degenerate);
   Read(json, "loop_closures_rejected_after_optimisation",
        q.loop_closures_rejected_after_optimisation);
   Read(json, "loop_closures_confirmed", q.loop_closures_confirmed);

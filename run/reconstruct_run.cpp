@@ -102,6 +102,7 @@ ReconstructRunResult ReconstructRun(const std::filesystem::path& bag,
   run.key_frames = quality.key_frames;
   run.loops_accepted = quality.loops_accepted;
   run.loops_rejected = quality.loops_rejected_match + quality.loops_rejected_disagreement +
+                       quality.loops_rejected_degenerate +
                        quality.loops_rejected_after_optimisation;
   return run;
 }

@@ -6,10 +6,12 @@
 #include "reconstruct/loop_closer.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include "synthetic_world.hpp"
 
@@ -137,6 +139,46 @@ TEST(LoopCloser, CorrectionBeyondPlausibleDriftIsRejected) {
   const KeyFrameMap map = MapWithRevisit(room, room, {0.5, 0.3, 0.05});
   const LoopAttempt attempt = LoopCloser(options).TryClose(map, map.key_frames().size() - 1);
   EXPECT_EQ(attempt.verdict, LoopVerdict::kRejectedDisagreement);
+}
+
+// A trunk of radius_m at centre: a polygon of 48 sides.
+std::vector<test::Segment> TrunkSides(const Eigen::Vector2d& centre, double radius_m) {
+  std::vector<test::Segment> sides;
+  constexpr int kSides = 48;
+  for (int i = 0; i < kSides; ++i) {
+    const double a = 2 * std::numbers::pi * i / kSides;
+    const double b = 2 * std::numbers::pi * (i + 1) / kSides;
+    sides.push_back({centre + radius_m * Eigen::Vector2d(std::cos(a), std::sin(a)),
+                     centre + radius_m * Eigen::Vector2d(std::cos(b), std::sin(b))});
+  }
+  return sides;
+}
+
+TEST(LoopCloser, ScanOfOneTrunkDoesNotPinThePoseDown) {
+  // Back at the start, the scan sees only a trunk 1.7 m away (the room is out of range, as a
+  // park's open ground is), and the estimate has drifted by a turn of 0.2 rad about the trunk.
+  // The trunk's arc fits as well there: ICP finds a full overlay with a small residual, and the
+  // loop would hold the drift in. The arc leaves turns about the trunk free: not a loop.
+  const Eigen::Vector2d centre(3.5, 3.2);
+  auto room = test::Room();
+  const auto trunk = TrunkSides(centre, 0.3);
+  room.insert(room.end(), trunk.begin(), trunk.end());
+  const Eigen::Vector2d centre_base = Transform(Inverse(PlanarPose{2.2, 2.1, 0.05}), centre);
+  const Eigen::Vector2d turned = Eigen::Rotation2Dd(0.2) * centre_base;
+  const PlanarPose drift{centre_base.x() - turned.x(), centre_base.y() - turned.y(), 0.2};
+  const KeyFrameMap map = MapWithRevisit(room, trunk, drift);
+  const std::size_t last = map.key_frames().size() - 1;
+  LoopCloserOptions options;
+  options.min_source_points = 0;  // the scan alone, as when the key frames before saw no more
+  LoopCloserOptions without_check = options;
+  without_check.max_weakest_sigma_m = std::numeric_limits<double>::infinity();
+  const LoopAttempt unchecked = LoopCloser(without_check).TryClose(map, last);
+  ASSERT_EQ(unchecked.verdict, LoopVerdict::kAccepted);  // the failure the check prevents
+  EXPECT_GT(unchecked.match.inlier_ratio, 0.95);
+  const PlanarPose stays =
+      Between(map.key_frames()[last].T_world_base, unchecked.match.T_target_source);
+  EXPECT_LT(std::abs(stays.theta_rad), 0.05);  // ICP left the drift where it was
+  EXPECT_EQ(LoopCloser(options).TryClose(map, last).verdict, LoopVerdict::kRejectedDegenerate);
 }
 
 TEST(LoopCloser, OdometryAloneOnTheWayWidensTheHeadingWindow) {

@@ -34,11 +34,12 @@ constexpr const char* kSlamText = R"json({
     "odometry-only": 2
   },
   "key_frames": 895,
-  "loop_closures_found": 439,
+  "loop_closures_found": 441,
   "loop_closures_accepted": 181,
-  "loop_closures_rejected": 258,
+  "loop_closures_rejected": 260,
   "loop_closures_rejected_match": 252,
   "loop_closures_rejected_disagreement": 3,
+  "loop_closures_rejected_degenerate": 2,
   "loop_closures_rejected_after_optimisation": 3,
   "loop_closures_confirmed": 1,
   "landmarks": {
@@ -101,6 +102,7 @@ constexpr const char* kRgbdText = R"json({
   "loop_closures_rejected": 0,
   "loop_closures_rejected_match": 0,
   "loop_closures_rejected_disagreement": 0,
+  "loop_closures_rejected_degenerate": 0,
   "loop_closures_rejected_after_optimisation": 0,
   "loop_closures_confirmed": 0,
   "landmarks": {
@@ -151,7 +153,8 @@ TEST(QualityFile, ReadsEveryFieldOfASlamRun) {
   ASSERT_EQ(q->routines.size(), 4u);
   EXPECT_EQ(q->routines[0], (std::pair<std::string, std::size_t>("global", 907)));
   EXPECT_EQ(q->routines[3], (std::pair<std::string, std::size_t>("odometry-only", 2)));
-  EXPECT_EQ(q->loop_closures_rejected, 258u);
+  EXPECT_EQ(q->loop_closures_rejected, 260u);
+  EXPECT_EQ(q->loop_closures_rejected_degenerate, 2u);
   EXPECT_EQ(q->loop_closures_rejected_after_optimisation, 3u);
   EXPECT_EQ(q->loop_closures_confirmed, 1u);
   EXPECT_EQ(q->landmarks.associated_by_tracking, 71u);
