@@ -11,7 +11,9 @@
 # RGB-D loops (hybrid only).
 #   bench/slam_park.sh [LITTERMAP] [WORK_DIR] [RUN...]
 # RUN is a world (park_small, park_large, ...) as shipped, or WORLD:SEED for the same world and
-# route with another draw of sensor noise, odometry drift and timing (`simulate --run-seed`).
+# route with another draw of sensor noise, odometry drift and timing (`simulate --run-seed`), and
+# WORLD/ROUTE or WORLD/ROUTE:SEED drives another of the world's `routes` (`simulate --route`),
+# e.g. park_large/perimeter:2.
 # One run of a park is one draw: its ATE can differ by a factor of two from the next draw's, so
 # the default measures park_small over four draws and ends with each world's spread per mode.
 # A benchmark, not a test: it prints, it does not assert.
@@ -42,24 +44,26 @@ json.dump({"wall_s": wall_s, "peak_mib": peak_kib / 1024}, open(out, "w"))
 EOF
 }
 
-printf '%-14s %-7s %7s %8s %8s %8s %8s %8s %6s %6s %7s %12s\n' run mode scans time_s scans/s \
+printf '%-22s %-7s %7s %8s %8s %8s %8s %8s %6s %6s %7s %12s\n' run mode scans time_s scans/s \
   peak_MiB ATE_m RPE_tr_m loops lm_lps cam_lps map_vs_truth
 rows=$work/rows.tsv
 : >"$rows"
 for run_name in "${run_names[@]}"; do
-  world=${run_name%%:*}
+  world=${run_name%%:*}  # WORLD or WORLD/ROUTE: the spread below is over its seeds
   seed_flags=()
   if [[ $run_name == *:* ]]; then seed_flags=(--run-seed "${run_name#*:}"); fi
-  bag=$work/$run_name/bag
-  truth=$work/$run_name/truth
+  if [[ $world == */* ]]; then seed_flags+=(--route "${world#*/}"); fi
+  run_dir=$work/${run_name//\//-}
+  bag=$run_dir/bag
+  truth=$run_dir/truth
   if [[ ! -f $truth/trajectory.tum ]]; then
-    rm -rf "${work:?}/$run_name"
-    mkdir -p "$work/$run_name"
-    "$littermap" -q simulate "$here/samples/worlds/$world.yaml" -o "$bag" --truth "$truth" \
+    rm -rf "$run_dir"
+    mkdir -p "$run_dir"
+    "$littermap" -q simulate "$here/samples/worlds/${world%%/*}.yaml" -o "$bag" --truth "$truth" \
       "${seed_flags[@]}" >/dev/null
   fi
   for mode in hybrid laser; do
-    run=$work/$run_name/run-$mode
+    run=$run_dir/run-$mode
     flags=()
     if [[ $mode == laser ]]; then flags=(--no-rgbd); fi
     rm -rf "$run"
@@ -74,7 +78,7 @@ for run_name in "${run_names[@]}"; do
       "$run/odometry.tum" >"$run/minutes.txt"
     ate_m=$(field "$run/eval.json" ate_rmse_m)
     printf '%s\t%s\t%s\n' "$world" "$mode" "$ate_m" >>"$rows"
-    printf '%-14s %-7s %7s %8s %8s %8s %8s %8s %6s %6s %7s %12s\n' "$run_name" "$mode" \
+    printf '%-22s %-7s %7s %8s %8s %8s %8s %8s %6s %6s %7s %12s\n' "$run_name" "$mode" \
       "$(field "$run/quality.json" scans %d)" "$(field "$run.time.json" wall_s %.1f)" \
       "$(field "$run/quality.json" scans_per_s %.0f)" "$(field "$run.time.json" peak_mib %.0f)" \
       "$(printf %.3f "$ate_m")" "$(field "$run/eval.json" rpe_trans_mean_m %.3f)" \
@@ -88,7 +92,7 @@ done
 # Drift against time for the long runs: error percentiles and distance ratio minute by minute.
 for run_name in "${run_names[@]}"; do
   for mode in hybrid laser; do
-    minutes=$work/$run_name/run-$mode/minutes.txt
+    minutes=$work/${run_name//\//-}/run-$mode/minutes.txt
     if [[ $(wc -l <"$minutes") -gt 8 ]]; then
       printf '\n%s %s, per minute:\n' "$run_name" "$mode"
       cat "$minutes"
@@ -103,9 +107,9 @@ for line in open(sys.argv[1]):
     world, mode, value = line.split()
     ate[(world, mode)].append(float(value))
 print()
-print("%-14s %-7s %5s %10s %10s %10s" % ("world", "mode", "runs", "ATE_min_m", "ATE_mean_m",
+print("%-20s %-7s %5s %10s %10s %10s" % ("world", "mode", "runs", "ATE_min_m", "ATE_mean_m",
                                          "ATE_max_m"))
 for (world, mode), values in ate.items():
-    print("%-14s %-7s %5d %10.3f %10.3f %10.3f" % (world, mode, len(values), min(values),
+    print("%-20s %-7s %5d %10.3f %10.3f %10.3f" % (world, mode, len(values), min(values),
                                                    sum(values) / len(values), max(values)))
 EOF

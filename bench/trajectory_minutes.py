@@ -7,8 +7,9 @@ Poses are associated by stamp (nearest within 20 ms), the estimate is rigidly al
 truth in the plane (closed-form 2D Horn/Umeyama over all associated poses, as ATE aligns), and
 for every minute of the run it prints the error percentiles (50/90/max, metres) and the
 distance ratio: path length of the estimate over that of the truth in that minute, both over
-poses a second apart. With an
-odometry trajectory, its distance ratio too. Plain Python: no third-party modules.
+poses a second apart, and true_m, the truth's path length (a run's last, partial minute may hold
+a few metres and a turn at the dock, where a ratio says little). With an odometry trajectory,
+its distance ratio too. Plain Python: no third-party modules.
 """
 import bisect
 import math
@@ -88,14 +89,16 @@ def main():
     truth_path = path_by_minute([t for _, t in pairs], start)
     estimate_path = path_by_minute([e for e, _ in pairs], start)
     odometry_path = path_by_minute(odometry, start) if odometry else {}
-    header = "%6s %8s %8s %8s %10s" % ("minute", "err_p50", "err_p90", "err_max", "dist_ratio")
+    header = "%6s %8s %8s %8s %8s %10s" % ("minute", "err_p50", "err_p90", "err_max", "true_m",
+                                           "dist_ratio")
     print(header + (" %10s" % "odom_ratio" if odometry else ""))
     for minute in sorted(errors):
         values = errors[minute]
         true_m = truth_path.get(minute, 0.0)
         ratio = estimate_path.get(minute, 0.0) / true_m if true_m > 0 else float("nan")
-        row = "%6d %8.3f %8.3f %8.3f %10.3f" % (minute, percentile(values, 0.5),
-                                                percentile(values, 0.9), max(values), ratio)
+        row = "%6d %8.3f %8.3f %8.3f %8.1f %10.3f" % (minute, percentile(values, 0.5),
+                                                      percentile(values, 0.9), max(values),
+                                                      true_m, ratio)
         if odometry:
             odom_ratio = odometry_path.get(minute, 0.0) / true_m if true_m > 0 else float("nan")
             row += " %10.3f" % odom_ratio
