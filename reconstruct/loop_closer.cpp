@@ -317,8 +317,8 @@ LoopAttempt LoopCloser::Judge(const KeyFrameMap& map, std::size_t current, std::
     attempt.verdict = LoopVerdict::kRejectedMatch;
     return attempt;
   }
-  if (WeakestSigmaM(match.information, options_.heading_lever_arm_m) >
-      options_.max_weakest_sigma_m) {
+  attempt.weakest_sigma_m = WeakestSigmaM(match.information, options_.heading_lever_arm_m);
+  if (*attempt.weakest_sigma_m > options_.max_weakest_sigma_m) {
     attempt.verdict = LoopVerdict::kRejectedDegenerate;
     return attempt;
   }

@@ -129,6 +129,8 @@ struct LoopAttempt {
   IcpResult match;
   std::optional<PoseGraphEdge> edge;  // set when accepted or tentative
   PlanarPose window;                  // the half-widths the search covered (x, y, heading)
+  // Of the match, once it passed the ratio and residual checks (max_weakest_sigma_m).
+  std::optional<double> weakest_sigma_m;
 };
 
 // A tentative loop: key frame edge->to, corrected to T_world_corrected.

@@ -221,26 +221,77 @@ void SlamPipeline::CloseLoops(std::size_t key_frame, bool end_of_run) {
     case LoopVerdict::kRejectedMatch:
       ++quality_.loop_candidates;
       ++quality_.loops_rejected_match;
+      RecordScanLoop(attempt, key_frame, LoopOutcome::kRejectedMatch);
       return;
     case LoopVerdict::kRejectedDisagreement:
       ++quality_.loop_candidates;
       ++quality_.loops_rejected_disagreement;
+      RecordScanLoop(attempt, key_frame, LoopOutcome::kRejectedDisagreement);
       return;
     case LoopVerdict::kRejectedDegenerate:
       ++quality_.loop_candidates;
       ++quality_.loops_rejected_degenerate;
+      RecordScanLoop(attempt, key_frame, LoopOutcome::kRejectedDegenerate);
       return;
     case LoopVerdict::kTentative:
       ++quality_.loop_candidates;
-      if (tentative_loop_) ++quality_.loops_rejected_match;  // the older one was not confirmed
+      if (tentative_loop_) DropTentativeLoop();  // the older one was not confirmed
       tentative_loop_ = TentativeLoop{attempt, attempt.match.T_target_source};
+      tentative_record_ = RecordScanLoop(attempt, key_frame, LoopOutcome::kTentative);
       return;
     case LoopVerdict::kAccepted:
       ++quality_.loop_candidates;
       break;
   }
+  RecordScanLoop(attempt, key_frame, LoopOutcome::kAccepted);
   AddLoopEdge(attempt);
   Optimise();
+}
+
+std::size_t SlamPipeline::RecordScanLoop(const LoopAttempt& attempt, std::size_t key_frame,
+                                         LoopOutcome outcome) {
+  const bool matched = attempt.match.converged;
+  const PlanarPose correction =
+      matched ? Between(map_.key_frames()[key_frame].T_world_base, attempt.match.T_target_source)
+              : PlanarPose{};
+  const std::size_t index =
+      RecordLoop(LoopKind::kScan, attempt.candidate, key_frame, correction, outcome);
+  if (matched) loops_[index].matching_ratio = attempt.match.inlier_ratio;
+  loops_[index].weakest_sigma_m = attempt.weakest_sigma_m;
+  return index;
+}
+
+std::size_t SlamPipeline::RecordLoop(LoopKind kind, std::size_t from, std::size_t to,
+                                     const PlanarPose& correction, LoopOutcome outcome) {
+  const auto& frames = map_.key_frames();
+  LoopRecord record;
+  record.kind = kind;
+  record.from_key_frame = from;
+  record.to_key_frame = to;
+  record.from_stamp_ns = frames[from].stamp_ns;
+  record.to_stamp_ns = frames[to].stamp_ns;
+  record.outcome = outcome;
+  record.correction = correction;
+  loops_.push_back(record);
+  return loops_.size() - 1;
+}
+
+void SlamPipeline::DropTentativeLoop() {
+  tentative_loop_.reset();
+  ++quality_.loops_rejected_match;
+  loops_[tentative_record_].outcome = LoopOutcome::kUnconfirmed;
+}
+
+void SlamPipeline::SettleLoopRecords() {
+  for (LoopRecord& record : loops_) {
+    if (record.outcome != LoopOutcome::kAccepted || record.kind == LoopKind::kLandmark) continue;
+    const bool camera = record.kind == LoopKind::kCamera;
+    const bool in_graph = std::any_of(edges_.begin(), edges_.end(), [&](const PoseGraphEdge& e) {
+      return e.loop && e.camera == camera && e.from == record.from_key_frame &&
+             e.to == record.to_key_frame;
+    });
+    if (!in_graph) record.outcome = LoopOutcome::kRejectedAfterOptimisation;
+  }
 }
 
 bool SlamPipeline::ConfirmTentativeLoop(std::size_t key_frame) {
@@ -248,14 +299,16 @@ bool SlamPipeline::ConfirmTentativeLoop(std::size_t key_frame) {
   const std::size_t tentative_key_frame = tentative_loop_->attempt.edge->to;
   if (key_frame <= tentative_key_frame) return false;  // only a later key frame confirms it
   if (key_frame > tentative_key_frame + options_.loops.confirm_within_key_frames) {
-    tentative_loop_.reset();
-    ++quality_.loops_rejected_match;
+    DropTentativeLoop();
     return false;
   }
   const LoopAttempt attempt = loop_closer_.Confirm(map_, key_frame, *tentative_loop_);
   if (attempt.verdict != LoopVerdict::kAccepted) return false;
   ++quality_.loop_candidates;
   ++quality_.loops_confirmed;
+  loops_[tentative_record_].outcome = LoopOutcome::kAccepted;
+  loops_[tentative_record_].confirmed = true;
+  RecordScanLoop(attempt, key_frame, LoopOutcome::kAccepted);
   AddLoopEdge(tentative_loop_->attempt);
   AddLoopEdge(attempt);
   tentative_loop_.reset();
@@ -289,8 +342,11 @@ void SlamPipeline::CloseCameraLoop(const TrackInput& input, const TrackStep& ste
   if (std::hypot(correction.x_m, correction.y_m) > options_.loops.MaxCorrectionM(path_m) ||
       std::abs(correction.theta_rad) > options_.loops.MaxCorrectionRad(path_m)) {
     ++quality_.camera_loops_rejected;
+    RecordLoop(LoopKind::kCamera, loop->key_frame, key_frame, correction,
+               LoopOutcome::kRejectedDisagreement);
     return;
   }
+  RecordLoop(LoopKind::kCamera, loop->key_frame, key_frame, correction, LoopOutcome::kAccepted);
   PoseGraphEdge edge;
   edge.from = loop->key_frame;
   edge.to = key_frame;
@@ -405,13 +461,18 @@ void SlamPipeline::CloseLandmarkLoops(std::size_t key_frame) {
       ++chi2_count;
     }
   }
+  const PlanarPose correction =
+      result.usable ? Between(frame.T_world_base, poses[key_frame]) : PlanarPose{};
   if (!result.usable || chi2_count == 0 ||
       chi2_sum / static_cast<double>(chi2_count) > options_.max_landmark_loop_chi2) {
     landmark_map_ = before;
     ++quality_.landmark_loops_rejected;
+    RecordLoop(LoopKind::kLandmark, old_key_frame, key_frame, correction,
+               LoopOutcome::kRejectedAfterOptimisation);
     return;
   }
   ++quality_.landmark_loops_accepted;
+  RecordLoop(LoopKind::kLandmark, old_key_frame, key_frame, correction, LoopOutcome::kAccepted);
   quality_.final_cost = result.final_cost;
   PoseGraphEdge link;
   link.from = old_key_frame;
@@ -464,12 +525,10 @@ void SlamPipeline::Finish() {
     const std::size_t last = map_.key_frames().size() - 1;
     if (!any_loop_ || last_loop_key_frame_ != last) CloseLoops(last, true);
   }
-  if (tentative_loop_) {  // no key frame is left to confirm it
-    tentative_loop_.reset();
-    ++quality_.loops_rejected_match;
-  }
+  if (tentative_loop_) DropTentativeLoop();  // no key frame is left to confirm it
   if (!unchecked_loops_.empty() || LandmarksInGraph()) Optimise();
   PruneFinalLoops();
+  SettleLoopRecords();
   quality_.landmarks = landmark_map_.graph_landmarks();
   for (const LandmarkTerm& term : BuildLandmarkTerms().terms) {
     ++scans_[map_.key_frames()[term.pose].scan_index].landmark_sightings;

@@ -18,6 +18,7 @@
 #include "reconstruct/landmark_extraction.hpp"
 #include "reconstruct/landmark_map.hpp"
 #include "reconstruct/loop_closer.hpp"
+#include "reconstruct/loop_record.hpp"
 #include "reconstruct/moving_echo_filter.hpp"
 #include "reconstruct/occupancy_grid.hpp"
 #include "reconstruct/pose_graph.hpp"
@@ -159,6 +160,8 @@ class SlamPipeline {
   std::vector<std::pair<TimestampNs, PlanarPose>> KeyFramePoses() const;
   const OccupancyGrid& map() const { return grid_; }
   const SlamQuality& quality() const { return quality_; }
+  // Every loop judged, in the order found; after Finish, each with its final outcome.
+  const std::vector<LoopRecord>& loops() const { return loops_; }
 
  private:
   void AddGraphEdge(const TrackInput& input, const TrackStep& step);
@@ -169,6 +172,15 @@ class SlamPipeline {
   bool ConfirmTentativeLoop(std::size_t key_frame);
   // Adds an accepted loop edge to the graph (not yet optimised).
   void AddLoopEdge(const LoopAttempt& attempt);
+  // Records a scan-matched loop; returns its index in loops_.
+  std::size_t RecordScanLoop(const LoopAttempt& attempt, std::size_t key_frame,
+                             LoopOutcome outcome);
+  std::size_t RecordLoop(LoopKind kind, std::size_t from, std::size_t to,
+                         const PlanarPose& correction, LoopOutcome outcome);
+  // The tentative loop was not confirmed in time: counted and recorded as such.
+  void DropTentativeLoop();
+  // After the final pruning: a loop accepted then but no longer in the graph was rejected.
+  void SettleLoopRecords();
   // Place recognition on the landmarks' constellation (LandmarkMap::FindLoop), verified by the
   // optimised graph.
   void CloseLandmarkLoops(std::size_t key_frame);
@@ -212,7 +224,9 @@ class SlamPipeline {
   // the landmark terms carry the constraint).
   std::vector<PoseGraphEdge> landmark_links_;
   std::optional<TentativeLoop> tentative_loop_;  // a match awaiting its confirmation
-  bool pending_landmark_loop_ = false;           // a landmark loop under verification
+  std::size_t tentative_record_ = 0;             // its index in loops_
+  std::vector<LoopRecord> loops_;
+  bool pending_landmark_loop_ = false;  // a landmark loop under verification
   double last_landmark_search_path_m_ = 0;
   std::size_t last_landmark_optimised_key_frame_ = 0;
   MovingEchoFilter moving_echoes_;

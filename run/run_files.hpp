@@ -30,6 +30,7 @@ struct RunFiles {
   std::filesystem::path map_yaml() const { return dir / "map.yaml"; }
   std::filesystem::path map_png() const { return dir / "map.png"; }
   std::filesystem::path routines() const { return dir / "routines.csv"; }
+  std::filesystem::path loops() const { return dir / "loops.csv"; }
   std::filesystem::path quality() const { return dir / "quality.json"; }
   std::filesystem::path sensor_roles() const { return dir / "sensor_roles.json"; }
   std::filesystem::path camera() const { return dir / "camera.tum"; }
@@ -43,7 +44,7 @@ struct RunFiles {
     std::vector<std::string> names;
     for (const std::filesystem::path& file :
          {files.trajectory(), files.odometry(), files.key_frames(), files.map_pgm(),
-          files.map_yaml(), files.map_png(), files.routines(), files.quality(),
+          files.map_yaml(), files.map_png(), files.routines(), files.loops(), files.quality(),
           files.sensor_roles(), files.camera(), files.camera_sources(), files.detections(),
           files.items()}) {
       names.push_back(file.filename().string());

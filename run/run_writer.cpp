@@ -1,6 +1,8 @@
 #include "run/run_writer.hpp"
 
+#include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <optional>
 
 #include "bag/tum_trajectory.hpp"
@@ -29,6 +31,33 @@ void WriteRoutines(const std::filesystem::path& path, const std::vector<ScanReco
     std::snprintf(ratio, sizeof ratio, "%.4f", scan.matching_ratio);
     text += bag::FormatTumStamp(scan.stamp_ns) + ',' + std::string(RoutineName(scan.routine)) +
             ',' + ratio + ',' + std::to_string(scan.landmark_sightings) + '\n';
+  }
+  WriteFileAtomically(path, text);
+}
+
+// One row per loop judged: the later key frame's time first, like routines.csv.
+void WriteLoops(const std::filesystem::path& path, const std::vector<LoopRecord>& loops) {
+  std::string text =
+      "time,kind,from_time,outcome,confirmed,matching_ratio,correction_m,correction_deg,"
+      "weakest_sigma_m\n";
+  char figures[128];
+  for (const LoopRecord& loop : loops) {
+    text += bag::FormatTumStamp(loop.to_stamp_ns) + ',' + std::string(LoopKindName(loop.kind)) +
+            ',' + bag::FormatTumStamp(loop.from_stamp_ns) + ',' +
+            std::string(LoopOutcomeName(loop.outcome)) + ',' + (loop.confirmed ? "1" : "0") + ',';
+    if (loop.matching_ratio) {
+      std::snprintf(figures, sizeof figures, "%.4f", *loop.matching_ratio);
+      text += figures;
+    }
+    std::snprintf(figures, sizeof figures, ",%.4f,%.3f,",
+                  std::hypot(loop.correction.x_m, loop.correction.y_m),
+                  loop.correction.theta_rad * 180 / std::numbers::pi);
+    text += figures;
+    if (loop.weakest_sigma_m) {
+      std::snprintf(figures, sizeof figures, "%.4f", *loop.weakest_sigma_m);
+      text += figures;
+    }
+    text += '\n';
   }
   WriteFileAtomically(path, text);
 }
@@ -148,6 +177,7 @@ void WriteRun(const std::filesystem::path& run_dir, const SlamPipeline& pipeline
   pipeline.map().WritePgmYaml(files.map_pgm(), files.map_yaml());
   pipeline.map().WritePng(files.map_png());
   WriteRoutines(files.routines(), pipeline.scans());
+  WriteLoops(files.loops(), pipeline.loops());
   if (rgbd != nullptr) WriteCameraPoses(run_dir, pipeline, *rgbd);
   WriteQualityFile(files.quality(), SlamRunQuality(pipeline.quality(), result, rgbd));
 }

@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -66,6 +68,30 @@ TEST(LandmarkLoopCli, TrunksCloseTheLoopBetweenLanes) {
   }
   EXPECT_GE(held, 100u);
   EXPECT_GE(sightings, 4 * held);
+  // loops.csv has a row for every loop judged: as many accepted of each kind as quality.json
+  // counts, each from an earlier time to a later one.
+  std::ifstream loops(d / "run" / "loops.csv");
+  std::getline(loops, line);
+  EXPECT_EQ(line,
+            "time,kind,from_time,outcome,confirmed,matching_ratio,correction_m,correction_deg,"
+            "weakest_sigma_m");
+  int landmark_accepted = 0, scan_accepted = 0, rows = 0;
+  while (std::getline(loops, line)) {
+    ++rows;
+    std::vector<std::string> fields;
+    std::stringstream row(line);
+    for (std::string field; std::getline(row, field, ',');) fields.push_back(field);
+    ASSERT_GE(fields.size(), 8u) << line;
+    EXPECT_LT(std::stod(fields[2]), std::stod(fields[0])) << line;
+    landmark_accepted += fields[1] == "landmark" && fields[3] == "accepted";
+    scan_accepted += fields[1] == "scan" && fields[3] == "accepted";
+  }
+  EXPECT_EQ(landmark_accepted, landmarks.at("loops_accepted").get<int>());
+  EXPECT_EQ(scan_accepted, quality.at("loop_closures_accepted").get<int>());
+  const int camera_found =
+      quality.contains("rgbd") ? quality.at("rgbd").at("loops_found").get<int>() : 0;
+  EXPECT_EQ(rows, quality.at("loop_closures_found").get<int>() +
+                      landmarks.at("loops_found").get<int>() + camera_found);
 
   const auto truth = d / "truth" / "trajectory.tum";
   const double ate = Ate(d / "run" / "trajectory.tum", truth);

@@ -31,7 +31,7 @@ TEST(ReconstructCli, OrebroRunDirectoryAndEvaluation) {
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_NE(run.output.find("237 poses"), std::string::npos) << run.output;
   for (const char* file : {"trajectory.tum", "keyframes.tum", "odometry.tum", "map.pgm", "map.yaml",
-                           "map.png", "routines.csv", "quality.json"}) {
+                           "map.png", "routines.csv", "loops.csv", "quality.json"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / "run" / file)) << file;
   }
   const auto quality = nlohmann::json::parse(Slurp(dir / "run" / "quality.json"));

@@ -17,6 +17,35 @@
 namespace littermap::reconstruct {
 namespace {
 
+std::size_t Loops(const SlamPipeline& pipeline, LoopKind kind, LoopOutcome outcome) {
+  return static_cast<std::size_t>(
+      std::count_if(pipeline.loops().begin(), pipeline.loops().end(),
+                    [&](const LoopRecord& r) { return r.kind == kind && r.outcome == outcome; }));
+}
+
+// The loop records tell the same story as the quality counters, loop by loop.
+void ExpectLoopRecordsAgreeWithTheCounts(const SlamPipeline& pipeline) {
+  const SlamQuality& q = pipeline.quality();
+  EXPECT_EQ(Loops(pipeline, LoopKind::kScan, LoopOutcome::kAccepted), q.loops_accepted);
+  EXPECT_EQ(Loops(pipeline, LoopKind::kScan, LoopOutcome::kRejectedMatch) +
+                Loops(pipeline, LoopKind::kScan, LoopOutcome::kUnconfirmed),
+            q.loops_rejected_match);
+  EXPECT_EQ(Loops(pipeline, LoopKind::kScan, LoopOutcome::kRejectedDisagreement),
+            q.loops_rejected_disagreement);
+  EXPECT_EQ(Loops(pipeline, LoopKind::kScan, LoopOutcome::kRejectedDegenerate),
+            q.loops_rejected_degenerate);
+  EXPECT_EQ(Loops(pipeline, LoopKind::kScan, LoopOutcome::kRejectedAfterOptimisation),
+            q.loops_rejected_after_optimisation);
+  EXPECT_EQ(Loops(pipeline, LoopKind::kLandmark, LoopOutcome::kAccepted),
+            q.landmark_loops_accepted);
+  EXPECT_EQ(Loops(pipeline, LoopKind::kCamera, LoopOutcome::kAccepted), q.camera_loops_accepted);
+  for (const LoopRecord& record : pipeline.loops()) {
+    EXPECT_NE(record.outcome, LoopOutcome::kTentative);  // settled by the end of the run
+    EXPECT_LT(record.from_key_frame, record.to_key_frame);
+    EXPECT_LT(record.from_stamp_ns, record.to_stamp_ns);
+  }
+}
+
 LaserScan RoomScan(const PlanarPose& pose, TimestampNs stamp_ns) {
   LaserScan scan = test::ScanFrom(test::Room(), pose);
   scan.stamp_ns = stamp_ns;
@@ -158,6 +187,19 @@ TEST(SlamPipeline, TheEndOfTheRunGetsAWideLoopSearch) {
   pipeline.Finish();
 
   EXPECT_EQ(pipeline.quality().loops_accepted, 1u);
+  ExpectLoopRecordsAgreeWithTheCounts(pipeline);
+  // The loop is the last key frame's, back to one of the first, 90 m along the path.
+  const auto accepted =
+      std::find_if(pipeline.loops().begin(), pipeline.loops().end(),
+                   [](const LoopRecord& r) { return r.outcome == LoopOutcome::kAccepted; });
+  ASSERT_NE(accepted, pipeline.loops().end());
+  EXPECT_EQ(accepted->kind, LoopKind::kScan);
+  EXPECT_LE(accepted->from_stamp_ns, 2'500'000'000);
+  EXPECT_EQ(accepted->to_stamp_ns, pipeline.scans().back().stamp_ns);
+  ASSERT_TRUE(accepted->matching_ratio.has_value());
+  EXPECT_GE(*accepted->matching_ratio, LoopCloserOptions{}.min_wide_matching_ratio);
+  ASSERT_TRUE(accepted->weakest_sigma_m.has_value());
+  EXPECT_LE(*accepted->weakest_sigma_m, LoopCloserOptions{}.max_weakest_sigma_m);
   // Where the last scan was, in the frame of the first (the world frame of the run).
   const PlanarPose expected = Between(start, Compose(truth, Inverse(PlanarPose{-0.6, 0, 0})));
   const PlanarPose& last = pipeline.scans().back().T_world_base;
@@ -204,6 +246,7 @@ std::size_t LandmarkSightingsInTheGraph(bool tilt, double range_m) {
   }
   pipeline.Finish();
   EXPECT_GT(pipeline.quality().loops_accepted, 0u);
+  ExpectLoopRecordsAgreeWithTheCounts(pipeline);
   std::size_t sightings = 0;
   for (const ScanRecord& record : pipeline.scans()) sightings += record.landmark_sightings;
   return sightings;
