@@ -101,9 +101,7 @@ ReconstructRunResult ReconstructRun(const std::filesystem::path& bag,
   run.poses = pipeline.scans().size();
   run.key_frames = quality.key_frames;
   run.loops_accepted = quality.loops_accepted;
-  run.loops_rejected = quality.loops_rejected_match + quality.loops_rejected_disagreement +
-                       quality.loops_rejected_degenerate +
-                       quality.loops_rejected_after_optimisation;
+  run.loops_rejected = quality.loops_rejected();
   return run;
 }
 
