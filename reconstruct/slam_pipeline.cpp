@@ -219,28 +219,20 @@ void SlamPipeline::CloseLoops(std::size_t key_frame, bool end_of_run) {
     case LoopVerdict::kNoCandidate:
       return;
     case LoopVerdict::kRejectedMatch:
-      ++quality_.loop_candidates;
-      ++quality_.loops_rejected_match;
       RecordScanLoop(attempt, key_frame, LoopOutcome::kRejectedMatch);
       return;
     case LoopVerdict::kRejectedDisagreement:
-      ++quality_.loop_candidates;
-      ++quality_.loops_rejected_disagreement;
       RecordScanLoop(attempt, key_frame, LoopOutcome::kRejectedDisagreement);
       return;
     case LoopVerdict::kRejectedDegenerate:
-      ++quality_.loop_candidates;
-      ++quality_.loops_rejected_degenerate;
       RecordScanLoop(attempt, key_frame, LoopOutcome::kRejectedDegenerate);
       return;
     case LoopVerdict::kTentative:
-      ++quality_.loop_candidates;
       if (tentative_loop_) DropTentativeLoop();  // the older one was not confirmed
       tentative_loop_ = TentativeLoop{attempt, attempt.match.T_target_source};
       tentative_record_ = RecordScanLoop(attempt, key_frame, LoopOutcome::kTentative);
       return;
     case LoopVerdict::kAccepted:
-      ++quality_.loop_candidates;
       break;
   }
   RecordScanLoop(attempt, key_frame, LoopOutcome::kAccepted);
@@ -278,7 +270,6 @@ std::size_t SlamPipeline::RecordLoop(LoopKind kind, std::size_t from, std::size_
 
 void SlamPipeline::DropTentativeLoop() {
   tentative_loop_.reset();
-  ++quality_.loops_rejected_match;
   loops_[tentative_record_].outcome = LoopOutcome::kUnconfirmed;
 }
 
@@ -294,6 +285,51 @@ void SlamPipeline::SettleLoopRecords() {
   }
 }
 
+void TallyLoops(const std::vector<LoopRecord>& records, SlamQuality* quality) {
+  SlamQuality& q = *quality;
+  q.loop_candidates = q.loops_accepted = q.loops_rejected_match = 0;
+  q.loops_rejected_disagreement = q.loops_rejected_degenerate = 0;
+  q.loops_rejected_after_optimisation = q.loops_confirmed = 0;
+  q.landmark_loops_found = q.landmark_loops_accepted = q.landmark_loops_rejected = 0;
+  q.camera_loops_found = q.camera_loops_accepted = q.camera_loops_rejected = 0;
+  for (const LoopRecord& record : records) {
+    const bool accepted = record.outcome == LoopOutcome::kAccepted;
+    switch (record.kind) {
+      case LoopKind::kScan:
+        ++q.loop_candidates;
+        if (record.confirmed) ++q.loops_confirmed;
+        switch (record.outcome) {
+          case LoopOutcome::kAccepted:
+            ++q.loops_accepted;
+            break;
+          case LoopOutcome::kRejectedMatch:
+          case LoopOutcome::kUnconfirmed:  // a match too weak to stand alone, never confirmed
+          case LoopOutcome::kTentative:
+            ++q.loops_rejected_match;
+            break;
+          case LoopOutcome::kRejectedDisagreement:
+            ++q.loops_rejected_disagreement;
+            break;
+          case LoopOutcome::kRejectedDegenerate:
+            ++q.loops_rejected_degenerate;
+            break;
+          case LoopOutcome::kRejectedAfterOptimisation:
+            ++q.loops_rejected_after_optimisation;
+            break;
+        }
+        break;
+      case LoopKind::kCamera:
+        ++q.camera_loops_found;
+        ++(accepted ? q.camera_loops_accepted : q.camera_loops_rejected);
+        break;
+      case LoopKind::kLandmark:
+        ++q.landmark_loops_found;
+        ++(accepted ? q.landmark_loops_accepted : q.landmark_loops_rejected);
+        break;
+    }
+  }
+}
+
 bool SlamPipeline::ConfirmTentativeLoop(std::size_t key_frame) {
   if (!tentative_loop_) return false;
   const std::size_t tentative_key_frame = tentative_loop_->attempt.edge->to;
@@ -304,8 +340,6 @@ bool SlamPipeline::ConfirmTentativeLoop(std::size_t key_frame) {
   }
   const LoopAttempt attempt = loop_closer_.Confirm(map_, key_frame, *tentative_loop_);
   if (attempt.verdict != LoopVerdict::kAccepted) return false;
-  ++quality_.loop_candidates;
-  ++quality_.loops_confirmed;
   loops_[tentative_record_].outcome = LoopOutcome::kAccepted;
   loops_[tentative_record_].confirmed = true;
   RecordScanLoop(attempt, key_frame, LoopOutcome::kAccepted);
@@ -335,13 +369,11 @@ void SlamPipeline::CloseCameraLoop(const TrackInput& input, const TrackStep& ste
   }
   const std::optional<CameraLoop> loop = rgbd_->FindLoop(input, step, map_);
   if (!loop) return;
-  ++quality_.camera_loops_found;
   const auto& frames = map_.key_frames();
   const double path_m = frames[key_frame].path_length_m - frames[loop->key_frame].path_length_m;
   const PlanarPose correction = Between(frames[key_frame].T_world_base, loop->T_world_base);
   if (std::hypot(correction.x_m, correction.y_m) > options_.loops.MaxCorrectionM(path_m) ||
       std::abs(correction.theta_rad) > options_.loops.MaxCorrectionRad(path_m)) {
-    ++quality_.camera_loops_rejected;
     RecordLoop(LoopKind::kCamera, loop->key_frame, key_frame, correction,
                LoopOutcome::kRejectedDisagreement);
     return;
@@ -433,7 +465,6 @@ void SlamPipeline::CloseLandmarkLoops(std::size_t key_frame) {
   const std::optional<LandmarkLoop> loop = landmark_map_.FindLoop(
       frame.T_world_base, frame.path_length_m, GraphDistancesFrom(key_frame));
   if (!loop) return;
-  ++quality_.landmark_loops_found;
   // The old key frame the link goes to: where the matched old landmarks were last seen.
   std::size_t old_key_frame = key_frame;
   for (const auto& [local, old] : loop->matches) {
@@ -466,12 +497,10 @@ void SlamPipeline::CloseLandmarkLoops(std::size_t key_frame) {
   if (!result.usable || chi2_count == 0 ||
       chi2_sum / static_cast<double>(chi2_count) > options_.max_landmark_loop_chi2) {
     landmark_map_ = before;
-    ++quality_.landmark_loops_rejected;
     RecordLoop(LoopKind::kLandmark, old_key_frame, key_frame, correction,
                LoopOutcome::kRejectedAfterOptimisation);
     return;
   }
-  ++quality_.landmark_loops_accepted;
   RecordLoop(LoopKind::kLandmark, old_key_frame, key_frame, correction, LoopOutcome::kAccepted);
   quality_.final_cost = result.final_cost;
   PoseGraphEdge link;
@@ -497,11 +526,8 @@ void SlamPipeline::Optimise() {
   for (std::size_t index : unchecked_loops_) {
     PoseGraphEdge& edge = edges_[index];
     if (!result.usable || !LoopFits(edge, poses, options_)) {
-      edge.information.setZero();  // marked for removal
+      edge.information.setZero();  // marked for removal (SettleLoopRecords finds it gone)
       removed = true;
-      ++(edge.camera ? quality_.camera_loops_rejected : quality_.loops_rejected_after_optimisation);
-    } else {
-      ++(edge.camera ? quality_.camera_loops_accepted : quality_.loops_accepted);
     }
   }
   unchecked_loops_.clear();
@@ -529,6 +555,7 @@ void SlamPipeline::Finish() {
   if (!unchecked_loops_.empty() || LandmarksInGraph()) Optimise();
   PruneFinalLoops();
   SettleLoopRecords();
+  TallyLoops(loops_, &quality_);
   quality_.landmarks = landmark_map_.graph_landmarks();
   for (const LandmarkTerm& term : BuildLandmarkTerms().terms) {
     ++scans_[map_.key_frames()[term.pose].scan_index].landmark_sightings;
@@ -576,20 +603,10 @@ void SlamPipeline::Finish() {
 void SlamPipeline::PruneFinalLoops() {
   std::vector<PlanarPose> poses = map_.Poses();
   LandmarkTerms terms = BuildLandmarkTerms();
-  const auto camera_loops = [&] {
-    return static_cast<std::size_t>(std::count_if(edges_.begin(), edges_.end(),
-                                                  [](const PoseGraphEdge& e) { return e.camera; }));
-  };
-  const std::size_t camera_loops_before = camera_loops();
   const LoopPruning pruning =
       PruneLoops(&poses, &edges_, options_.max_final_loop_chi2, options_.graph, &terms);
   if (pruning.removed == 0) return;
   // Edges removed before an unusable solution stay removed; the poses are the last usable ones.
-  const std::size_t camera_removed = camera_loops_before - camera_loops();
-  quality_.camera_loops_accepted -= camera_removed;
-  quality_.camera_loops_rejected += camera_removed;
-  quality_.loops_accepted -= pruning.removed - camera_removed;
-  quality_.loops_rejected_after_optimisation += pruning.removed - camera_removed;
   quality_.optimisations += pruning.removed;
   if (pruning.usable) quality_.final_cost = pruning.final_cost;
   ApplyPoses(poses);

@@ -116,6 +116,7 @@ struct SlamQuality {
   std::size_t odometry_arbitrated = 0;          // the laser chose odometry or constant velocity
   std::array<std::size_t, 4> routine_counts{};  // indexed by Routine
   std::size_t key_frames = 0;
+  // The loop counters below are the sums of the loop records (TallyLoops, at Finish).
   std::size_t loop_candidates = 0;
   std::size_t loops_accepted = 0;
   std::size_t loops_rejected_match = 0;
@@ -148,6 +149,11 @@ struct SlamQuality {
   ScanAlignmentResult alignment;   // the final scan alignment, if it ran
   ScanAlignmentResult refinement;  // of every scan (SlamOptions::refine_scans), if it ran
 };
+
+// Sets quality's loop counters from the run's loop records, kind by kind and outcome by
+// outcome: the records are the one account of the loops, the counters their sums. A tentative
+// record counts as a rejected match (it is one until confirmed).
+void TallyLoops(const std::vector<LoopRecord>& records, SlamQuality* quality);
 
 class SlamPipeline {
  public:
@@ -182,7 +188,7 @@ class SlamPipeline {
                              LoopOutcome outcome);
   std::size_t RecordLoop(LoopKind kind, std::size_t from, std::size_t to,
                          const PlanarPose& correction, LoopOutcome outcome);
-  // The tentative loop was not confirmed in time: counted and recorded as such.
+  // The tentative loop was not confirmed in time: recorded as such.
   void DropTentativeLoop();
   // After the final pruning: a loop accepted then but no longer in the graph was rejected.
   void SettleLoopRecords();
