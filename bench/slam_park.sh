@@ -11,9 +11,14 @@
 # RGB-D loops (hybrid only).
 #   bench/slam_park.sh [LITTERMAP] [WORK_DIR] [RUN...]
 # RUN is a world (park_small, park_large, ...) as shipped, or WORLD:SEED for the same world and
-# route with another draw of sensor noise, odometry drift and timing (`simulate --run-seed`), and
-# WORLD/ROUTE or WORLD/ROUTE:SEED drives another of the world's `routes` (`simulate --route`),
-# e.g. park_large/perimeter:2.
+# route with another draw of sensor noise, odometry drift and timing (`simulate --run-seed`),
+# WORLD@SEED for another park drawn from the same world file (`simulate --seed`: trees, litter,
+# terrain and the run's noise), and WORLD/ROUTE or WORLD/ROUTE:SEED drives another of the world's
+# `routes` (`simulate --route`), e.g. park_large/perimeter:2. The small parks' acceptance set,
+# three draws and three other parks of each:
+#   bench/slam_park.sh BIN DIR park_{small,tilts}:{1,2,3} park_{small,tilts}@{101,102,103}
+# odom_ATE is the ATE of the run's odometry (gyro-turned where there is an IMU), the bar below
+# every run's.
 # One run of a park is one draw: its ATE can differ by a factor of two from the next draw's, so
 # the default measures park_small over four draws and ends with each world's spread per mode.
 # A benchmark, not a test: it prints, it does not assert.
@@ -44,14 +49,19 @@ json.dump({"wall_s": wall_s, "peak_mib": peak_kib / 1024}, open(out, "w"))
 EOF
 }
 
-printf '%-22s %-7s %7s %8s %8s %8s %8s %8s %6s %6s %7s %12s\n' run mode scans time_s scans/s \
-  peak_MiB ATE_m RPE_tr_m loops lm_lps cam_lps map_vs_truth
+printf '%-22s %-7s %7s %8s %8s %8s %8s %8s %8s %6s %6s %7s %12s\n' run mode scans time_s \
+  scans/s peak_MiB ATE_m odom_ATE RPE_tr_m loops lm_lps cam_lps map_vs_truth
 rows=$work/rows.tsv
 : >"$rows"
 for run_name in "${run_names[@]}"; do
-  world=${run_name%%:*}  # WORLD or WORLD/ROUTE: the spread below is over its seeds
+  world=${run_name%%:*}
   seed_flags=()
   if [[ $run_name == *:* ]]; then seed_flags=(--run-seed "${run_name#*:}"); fi
+  if [[ $world == *@* ]]; then
+    seed_flags+=(--seed "${world#*@}")
+    world=${world%%@*}
+  fi
+  # WORLD or WORLD/ROUTE: the spread below is over its draws and parks.
   if [[ $world == */* ]]; then seed_flags+=(--route "${world#*/}"); fi
   run_dir=$work/${run_name//\//-}
   bag=$run_dir/bag
@@ -71,6 +81,8 @@ for run_name in "${run_names[@]}"; do
       "${flags[@]}"
     "$littermap" eval trajectory "$run/trajectory.tum" "$truth/trajectory.tum" --json \
       >"$run/eval.json"
+    "$littermap" eval trajectory "$run/odometry.tum" "$truth/trajectory.tum" --json \
+      >"$run/odometry_eval.json"
     "$littermap" -q eval map "$bag" "$run/trajectory.tum" "$truth/trajectory.tum" --json \
       >"$run/map_eval.json"
     map_vs_truth=$(cells_ratio "$run/map_eval.json")
@@ -78,10 +90,11 @@ for run_name in "${run_names[@]}"; do
       "$run/odometry.tum" >"$run/minutes.txt"
     ate_m=$(field "$run/eval.json" ate_rmse_m)
     printf '%s\t%s\t%s\n' "$world" "$mode" "$ate_m" >>"$rows"
-    printf '%-22s %-7s %7s %8s %8s %8s %8s %8s %6s %6s %7s %12s\n' "$run_name" "$mode" \
+    printf '%-22s %-7s %7s %8s %8s %8s %8s %8s %8s %6s %6s %7s %12s\n' "$run_name" "$mode" \
       "$(field "$run/quality.json" scans %d)" "$(field "$run.time.json" wall_s %.1f)" \
       "$(field "$run/quality.json" scans_per_s %.0f)" "$(field "$run.time.json" peak_mib %.0f)" \
-      "$(printf %.3f "$ate_m")" "$(field "$run/eval.json" rpe_trans_mean_m %.3f)" \
+      "$(printf %.3f "$ate_m")" "$(field "$run/odometry_eval.json" ate_rmse_m %.3f)" \
+      "$(field "$run/eval.json" rpe_trans_mean_m %.3f)" \
       "$(field "$run/quality.json" loop_closures_accepted %d)" \
       "$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["landmarks"]["loops_accepted"])' \
         "$run/quality.json")" \
