@@ -85,6 +85,11 @@ void LoopCloserOptions::Validate() const {
         "loop closure: odometry_drift_sigmas and the confirmation's disagreement bounds must be "
         ">= 0");
   }
+  if (!(max_gyro_disagreement_rad > 0) || !(max_gyro_disagreement_rad_per_s >= 0)) {
+    throw UsageError(
+        "loop closure: max_gyro_disagreement_rad must be > 0, max_gyro_disagreement_rad_per_s "
+        ">= 0");
+  }
   if (!(min_wide_matching_ratio > 0 && min_wide_matching_ratio <= 1) || far_graph_distance_m < 0) {
     throw UsageError(
         "loop closure: min_wide_matching_ratio must be in (0, 1], far_graph_distance_m >= 0");

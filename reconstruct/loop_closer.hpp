@@ -98,6 +98,16 @@ struct LoopCloserOptions {
   double MaxCorrectionRad(double path_m) const {
     return max_correction_rad + max_correction_rad_per_m * path_m;
   }
+  // Where a gyro turned the odometry all the way between the two key frames, a loop's heading
+  // between them must agree with the gyro's turn to within this floor plus this much per second
+  // between them: a gyro's bias (0.0002 rad/s is 41 degrees an hour, an uncalibrated MEMS gyro's)
+  // turns its heading with time, not with the path. The path-based bound above allows a park
+  // survey's dock loop 47 degrees; the gyro, a few.
+  double max_gyro_disagreement_rad = 0.1;
+  double max_gyro_disagreement_rad_per_s = 0.0002;
+  double MaxGyroDisagreementRad(double elapsed_s) const {
+    return max_gyro_disagreement_rad + max_gyro_disagreement_rad_per_s * elapsed_s;
+  }
   void Validate() const;
 };
 

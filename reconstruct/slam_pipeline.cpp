@@ -147,6 +147,8 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdomet
     record.z_m = scans_.back().z_m;
   }
   scans_.push_back(record);
+  scans_without_gyro_.push_back((scans_without_gyro_.empty() ? 0 : scans_without_gyro_.back()) +
+                                (T_odom_base && input.heading_from_gyro ? 0 : 1));
   StoreMapPoints(still_base ? *still_base : echoes_base);
   if (step.new_key_frame) {
     if (step.key_frame > 0) AddGraphEdge(input, step);
@@ -228,11 +230,19 @@ void SlamPipeline::CloseLoops(std::size_t key_frame, bool end_of_run) {
       RecordScanLoop(attempt, key_frame, LoopOutcome::kRejectedDegenerate);
       return;
     case LoopVerdict::kTentative:
+      if (!GyroAgreesWithLoop(attempt.edge->from, key_frame, attempt.edge->T_from_to.theta_rad)) {
+        RecordScanLoop(attempt, key_frame, LoopOutcome::kRejectedDisagreement);
+        return;
+      }
       if (tentative_loop_) DropTentativeLoop();  // the older one was not confirmed
       tentative_loop_ = TentativeLoop{attempt, attempt.match.T_target_source};
       tentative_record_ = RecordScanLoop(attempt, key_frame, LoopOutcome::kTentative);
       return;
     case LoopVerdict::kAccepted:
+      if (!GyroAgreesWithLoop(attempt.edge->from, key_frame, attempt.edge->T_from_to.theta_rad)) {
+        RecordScanLoop(attempt, key_frame, LoopOutcome::kRejectedDisagreement);
+        return;
+      }
       break;
   }
   RecordScanLoop(attempt, key_frame, LoopOutcome::kAccepted);
@@ -339,7 +349,10 @@ bool SlamPipeline::ConfirmTentativeLoop(std::size_t key_frame) {
     return false;
   }
   const LoopAttempt attempt = loop_closer_.Confirm(map_, key_frame, *tentative_loop_);
-  if (attempt.verdict != LoopVerdict::kAccepted) return false;
+  if (attempt.verdict != LoopVerdict::kAccepted ||
+      !GyroAgreesWithLoop(attempt.edge->from, key_frame, attempt.edge->T_from_to.theta_rad)) {
+    return false;
+  }
   loops_[tentative_record_].outcome = LoopOutcome::kAccepted;
   loops_[tentative_record_].confirmed = true;
   RecordScanLoop(attempt, key_frame, LoopOutcome::kAccepted);
@@ -348,6 +361,20 @@ bool SlamPipeline::ConfirmTentativeLoop(std::size_t key_frame) {
   tentative_loop_.reset();
   Optimise();
   return true;
+}
+
+bool SlamPipeline::GyroAgreesWithLoop(std::size_t from, std::size_t to, double heading_rad) const {
+  const auto& frames = map_.key_frames();
+  const ScanRecord& a = scans_[frames[from].scan_index];
+  const ScanRecord& b = scans_[frames[to].scan_index];
+  // The gyro turned every odometry step after a's scan up to b's.
+  if (!a.T_odom_base || !b.T_odom_base ||
+      scans_without_gyro_[b.scan_index] != scans_without_gyro_[a.scan_index]) {
+    return true;
+  }
+  const double gyro_rad = b.T_odom_base->theta_rad - a.T_odom_base->theta_rad;
+  return std::abs(WrapAngle(heading_rad - gyro_rad)) <=
+         options_.loops.MaxGyroDisagreementRad(ToSeconds(b.stamp_ns - a.stamp_ns));
 }
 
 void SlamPipeline::AddLoopEdge(const LoopAttempt& attempt) {
@@ -373,7 +400,10 @@ void SlamPipeline::CloseCameraLoop(const TrackInput& input, const TrackStep& ste
   const double path_m = frames[key_frame].path_length_m - frames[loop->key_frame].path_length_m;
   const PlanarPose correction = Between(frames[key_frame].T_world_base, loop->T_world_base);
   if (std::hypot(correction.x_m, correction.y_m) > options_.loops.MaxCorrectionM(path_m) ||
-      std::abs(correction.theta_rad) > options_.loops.MaxCorrectionRad(path_m)) {
+      std::abs(correction.theta_rad) > options_.loops.MaxCorrectionRad(path_m) ||
+      !GyroAgreesWithLoop(
+          loop->key_frame, key_frame,
+          Between(frames[loop->key_frame].T_world_base, loop->T_world_base).theta_rad)) {
     RecordLoop(LoopKind::kCamera, loop->key_frame, key_frame, correction,
                LoopOutcome::kRejectedDisagreement);
     return;

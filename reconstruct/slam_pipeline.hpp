@@ -183,6 +183,10 @@ class SlamPipeline {
   bool ConfirmTentativeLoop(std::size_t key_frame);
   // Adds an accepted loop edge to the graph (not yet optimised).
   void AddLoopEdge(const LoopAttempt& attempt);
+  // False where a gyro turned the odometry all the way from `from` to `to` (key frames) and the
+  // loop's heading between them disagrees with the gyro's turn
+  // (LoopCloserOptions::MaxGyroDisagreementRad); true where there is no such gyro to ask.
+  bool GyroAgreesWithLoop(std::size_t from, std::size_t to, double heading_rad) const;
   // Records a scan-matched loop; returns its index in loops_.
   std::size_t RecordScanLoop(const LoopAttempt& attempt, std::size_t key_frame,
                              LoopOutcome outcome);
@@ -246,6 +250,9 @@ class SlamPipeline {
   std::vector<PoseGraphEdge> edges_;
   std::vector<std::size_t> unchecked_loops_;  // indices into edges_ since the last optimisation
   std::vector<ScanRecord> scans_;
+  // Scans so far whose odometry the gyro did not turn (or without odometry), after each scan: a
+  // stretch of scans was gyro-turned all along where it does not grow.
+  std::vector<std::size_t> scans_without_gyro_;
   std::optional<double> first_odometry_z_m_;
   bool tilted_ = false;          // some scan came with the base's tilt
   double max_scan_range_m_ = 0;  // the scanner's, as its scans state it

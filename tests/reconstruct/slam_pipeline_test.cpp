@@ -179,42 +179,59 @@ TEST(SlamPipeline, ScanAlignmentRunsForALevelScannerUnlessAskedOtherwise) {
   EXPECT_GT(aligned.alignment.pairs_matched, 0u);
 }
 
-// A survey that comes home after a long stretch the laser saw nothing of, placed by odometry that
-// drifted 2.7 m sideways: the nearest-candidate search reaches 1 m here and the run's wide
-// searches are spaced further apart than the run is long, so only the search at the end of the
-// run, back at the start, can close the loop. (The final scan alignment is left out: it is
-// tested on its own.)
-TEST(SlamPipeline, TheEndOfTheRunGetsAWideLoopSearch) {
+// Out 45 m and back with the laser blind in between (the walls out of its reach), then back over
+// the start, where the end of the run's wide search closes the loop. The odometry turns
+// far_turn_error_rad too far at the far end and home_turn_error_rad too far at home; gyro: the
+// odometry says a gyro turned it. The final scan alignment is left out (tested on its own).
+struct OutAndBack {
+  PlanarPose start{2, 2, 0};
+  PlanarPose truth = start;  // where the run ended
+};
+
+OutAndBack DriveOutAndBack(SlamPipeline* pipeline, double far_turn_error_rad,
+                           double home_turn_error_rad, bool gyro) {
+  OutAndBack run;
+  PlanarPose odometry = run.start;
+  TimestampNs stamp_ns = 0;
+  const auto scan_and_move = [&](bool laser_sees, const PlanarPose& step, double odometry_turn) {
+    stamp_ns += 500'000'000;
+    LaserScan scan = RoomScan(run.truth, stamp_ns);
+    if (!laser_sees) {
+      std::fill(scan.ranges_m.begin(), scan.ranges_m.end(),
+                std::numeric_limits<float>::quiet_NaN());
+    }
+    pipeline->AddScan(scan, GyroOdometryPose{odometry, gyro, 0});
+    run.truth = Compose(run.truth, step);
+    odometry = Compose(odometry, {step.x_m, step.y_m, step.theta_rad + odometry_turn});
+  };
+  for (int i = 0; i < 5; ++i) scan_and_move(true, {0.6, 0, 0}, 0);
+  for (int leg = 0; leg < 2; ++leg) {
+    for (int i = 0; i < 45; ++i) scan_and_move(false, {1, 0, 0}, 0);
+    const double error = (leg == 0 ? far_turn_error_rad : home_turn_error_rad) / 3;
+    for (int i = 0; i < 3; ++i) scan_and_move(false, {0, 0, std::numbers::pi / 3}, error);
+  }
+  for (int i = 0; i < 4; ++i) scan_and_move(true, {-0.6, 0, 0}, 0);  // back over the start
+  pipeline->Finish();
+  return run;
+}
+
+SlamOptions OutAndBackOptions() {
   SlamOptions options;
   options.landmarks = false;
   options.alignment_mode = AlignmentMode::kOff;
   options.loops.search_radius_m = 1;
   options.wide_loop_search_every_m = 1000;
-  SlamPipeline pipeline(options, {});
-  const PlanarPose start{2, 2, 0};
-  PlanarPose truth = start, odometry = start;
-  TimestampNs stamp_ns = 0;
-  const auto scan_and_move = [&](bool laser_sees, const PlanarPose& step, double odometry_turn) {
-    stamp_ns += 500'000'000;
-    LaserScan scan = RoomScan(truth, stamp_ns);
-    if (!laser_sees) {
-      std::fill(scan.ranges_m.begin(), scan.ranges_m.end(),
-                std::numeric_limits<float>::quiet_NaN());
-    }
-    pipeline.AddScan(scan, GyroOdometryPose{odometry});
-    truth = Compose(truth, step);
-    odometry = Compose(odometry, {step.x_m, step.y_m, step.theta_rad + odometry_turn});
-  };
-  for (int i = 0; i < 5; ++i) scan_and_move(true, {0.6, 0, 0}, 0);
-  // 45 m out and back; the wheels turn 0.06 rad too far at the far end, as much too little at home
-  for (int leg = 0; leg < 2; ++leg) {
-    for (int i = 0; i < 45; ++i) scan_and_move(false, {1, 0, 0}, 0);
-    for (int i = 0; i < 3; ++i) {
-      scan_and_move(false, {0, 0, std::numbers::pi / 3}, leg == 0 ? 0.02 : -0.02);
-    }
-  }
-  for (int i = 0; i < 4; ++i) scan_and_move(true, {-0.6, 0, 0}, 0);  // back over the start
-  pipeline.Finish();
+  return options;
+}
+
+// A survey that comes home after a long stretch the laser saw nothing of, placed by odometry that
+// drifted 2.7 m sideways (the wheels turn 0.06 rad too far at the far end and as much too little
+// at home): the nearest-candidate search reaches 1 m here and the run's wide searches are spaced
+// further apart than the run is long, so only the search at the end of the run, back at the
+// start, can close the loop.
+TEST(SlamPipeline, TheEndOfTheRunGetsAWideLoopSearch) {
+  SlamPipeline pipeline(OutAndBackOptions(), {});
+  const OutAndBack run = DriveOutAndBack(&pipeline, 0.06, -0.06, false);
 
   EXPECT_EQ(pipeline.quality().loops_accepted, 1u);
   ExpectLoopRecordsSettled(pipeline);
@@ -231,10 +248,31 @@ TEST(SlamPipeline, TheEndOfTheRunGetsAWideLoopSearch) {
   ASSERT_TRUE(accepted->weakest_sigma_m.has_value());
   EXPECT_LE(*accepted->weakest_sigma_m, LoopCloserOptions{}.max_weakest_sigma_m);
   // Where the last scan was, in the frame of the first (the world frame of the run).
-  const PlanarPose expected = Between(start, Compose(truth, Inverse(PlanarPose{-0.6, 0, 0})));
+  const PlanarPose expected =
+      Between(run.start, Compose(run.truth, Inverse(PlanarPose{-0.6, 0, 0})));
   const PlanarPose& last = pipeline.scans().back().T_world_base;
   EXPECT_LT(std::hypot(last.x_m - expected.x_m, last.y_m - expected.y_m), 0.1);
   EXPECT_LT(std::abs(WrapAngle(last.theta_rad - expected.theta_rad)), 0.02);
+}
+
+// With a gyro turning the odometry all the way, a loop must agree with the gyro's heading: here
+// the "gyro" turned 0.06 rad too far at the far end, so the true loop at home disagrees with it by
+// 0.06 rad. Within the gyro's bound (default: 0.1 rad + 0.0002 rad/s, 0.11 rad over this run) it
+// is accepted; with the bound at 0.02 rad the same loop is rejected as a disagreement.
+TEST(SlamPipeline, ALoopMustAgreeWithTheGyroOverItsPath) {
+  SlamPipeline within(OutAndBackOptions(), {});
+  DriveOutAndBack(&within, 0.06, 0, true);
+  EXPECT_EQ(within.quality().loops_accepted, 1u);
+  EXPECT_EQ(within.quality().loops_rejected_disagreement, 0u);
+
+  SlamOptions tight = OutAndBackOptions();
+  tight.loops.max_gyro_disagreement_rad = 0.02;
+  tight.loops.max_gyro_disagreement_rad_per_s = 0;
+  SlamPipeline beyond(tight, {});
+  DriveOutAndBack(&beyond, 0.06, 0, true);
+  EXPECT_EQ(beyond.quality().loops_accepted, 0u);
+  EXPECT_GE(beyond.quality().loops_rejected_disagreement, 1u);
+  ExpectLoopRecordsSettled(beyond);
 }
 
 // The room with five posts (24-gons, 0.15 m radius: landmarks), driven around once and on until
