@@ -216,7 +216,8 @@ void SlamPipeline::CloseLoops(std::size_t key_frame, bool end_of_run) {
   const bool wide =
       end_of_run || path_m - last_wide_search_path_m_ >= options_.wide_loop_search_every_m;
   if (wide) last_wide_search_path_m_ = path_m;
-  const LoopAttempt attempt = loop_closer_.TryClose(map_, key_frame, ReachFrom(key_frame), wide);
+  LoopAttempt attempt = loop_closer_.TryClose(map_, key_frame, ReachFrom(key_frame), wide);
+  HoldToGyro(&attempt);
   switch (attempt.verdict) {
     case LoopVerdict::kNoCandidate:
       return;
@@ -230,19 +231,11 @@ void SlamPipeline::CloseLoops(std::size_t key_frame, bool end_of_run) {
       RecordScanLoop(attempt, key_frame, LoopOutcome::kRejectedDegenerate);
       return;
     case LoopVerdict::kTentative:
-      if (!GyroAgreesWithLoop(attempt.edge->from, key_frame, attempt.edge->T_from_to.theta_rad)) {
-        RecordScanLoop(attempt, key_frame, LoopOutcome::kRejectedDisagreement);
-        return;
-      }
       if (tentative_loop_) DropTentativeLoop();  // the older one was not confirmed
       tentative_loop_ = TentativeLoop{attempt, attempt.match.T_target_source};
       tentative_record_ = RecordScanLoop(attempt, key_frame, LoopOutcome::kTentative);
       return;
     case LoopVerdict::kAccepted:
-      if (!GyroAgreesWithLoop(attempt.edge->from, key_frame, attempt.edge->T_from_to.theta_rad)) {
-        RecordScanLoop(attempt, key_frame, LoopOutcome::kRejectedDisagreement);
-        return;
-      }
       break;
   }
   RecordScanLoop(attempt, key_frame, LoopOutcome::kAccepted);
@@ -348,11 +341,9 @@ bool SlamPipeline::ConfirmTentativeLoop(std::size_t key_frame) {
     DropTentativeLoop();
     return false;
   }
-  const LoopAttempt attempt = loop_closer_.Confirm(map_, key_frame, *tentative_loop_);
-  if (attempt.verdict != LoopVerdict::kAccepted ||
-      !GyroAgreesWithLoop(attempt.edge->from, key_frame, attempt.edge->T_from_to.theta_rad)) {
-    return false;
-  }
+  LoopAttempt attempt = loop_closer_.Confirm(map_, key_frame, *tentative_loop_);
+  HoldToGyro(&attempt);
+  if (attempt.verdict != LoopVerdict::kAccepted) return false;
   loops_[tentative_record_].outcome = LoopOutcome::kAccepted;
   loops_[tentative_record_].confirmed = true;
   RecordScanLoop(attempt, key_frame, LoopOutcome::kAccepted);
@@ -361,6 +352,14 @@ bool SlamPipeline::ConfirmTentativeLoop(std::size_t key_frame) {
   tentative_loop_.reset();
   Optimise();
   return true;
+}
+
+void SlamPipeline::HoldToGyro(LoopAttempt* attempt) const {
+  if (attempt->edge && !GyroAgreesWithLoop(attempt->edge->from, attempt->edge->to,
+                                           attempt->edge->T_from_to.theta_rad)) {
+    attempt->verdict = LoopVerdict::kRejectedDisagreement;
+    attempt->edge.reset();
+  }
 }
 
 bool SlamPipeline::GyroAgreesWithLoop(std::size_t from, std::size_t to, double heading_rad) const {
@@ -399,11 +398,10 @@ void SlamPipeline::CloseCameraLoop(const TrackInput& input, const TrackStep& ste
   const auto& frames = map_.key_frames();
   const double path_m = frames[key_frame].path_length_m - frames[loop->key_frame].path_length_m;
   const PlanarPose correction = Between(frames[key_frame].T_world_base, loop->T_world_base);
+  const PlanarPose T_old_new = Between(frames[loop->key_frame].T_world_base, loop->T_world_base);
   if (std::hypot(correction.x_m, correction.y_m) > options_.loops.MaxCorrectionM(path_m) ||
       std::abs(correction.theta_rad) > options_.loops.MaxCorrectionRad(path_m) ||
-      !GyroAgreesWithLoop(
-          loop->key_frame, key_frame,
-          Between(frames[loop->key_frame].T_world_base, loop->T_world_base).theta_rad)) {
+      !GyroAgreesWithLoop(loop->key_frame, key_frame, T_old_new.theta_rad)) {
     RecordLoop(LoopKind::kCamera, loop->key_frame, key_frame, correction,
                LoopOutcome::kRejectedDisagreement);
     return;
@@ -412,7 +410,7 @@ void SlamPipeline::CloseCameraLoop(const TrackInput& input, const TrackStep& ste
   PoseGraphEdge edge;
   edge.from = loop->key_frame;
   edge.to = key_frame;
-  edge.T_from_to = Between(frames[loop->key_frame].T_world_base, loop->T_world_base);
+  edge.T_from_to = T_old_new;
   edge.information =
       DiagonalInformation(options_.tracker.rgbd_sigma_m, options_.tracker.rgbd_sigma_rad);
   edge.loop = true;

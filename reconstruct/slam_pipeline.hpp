@@ -187,6 +187,9 @@ class SlamPipeline {
   // loop's heading between them disagrees with the gyro's turn
   // (LoopCloserOptions::MaxGyroDisagreementRad); true where there is no such gyro to ask.
   bool GyroAgreesWithLoop(std::size_t from, std::size_t to, double heading_rad) const;
+  // A match the loop closer took (accepted or tentative) that the gyro contradicts
+  // (GyroAgreesWithLoop) becomes a disagreement, like one beyond the drift bound.
+  void HoldToGyro(LoopAttempt* attempt) const;
   // Records a scan-matched loop; returns its index in loops_.
   std::size_t RecordScanLoop(const LoopAttempt& attempt, std::size_t key_frame,
                              LoopOutcome outcome);
