@@ -69,6 +69,11 @@ void RegisterDetectCommand(CLI::App& app, CliContext& context) {
       ->capture_default_str()
       ->check(WholeNumber(1, 1000));
   command
+      ->add_option("--min-seen-share", arguments->options.fusion.min_seen_share,
+                   "Share of the frames that could see an item it must be seen in to be kept")
+      ->capture_default_str()
+      ->check(FiniteRange(0, 1));
+  command
       ->add_option("--association-radius", arguments->options.fusion.association_radius_m,
                    "Sightings this close (m) are one item")
       ->capture_default_str()
@@ -89,6 +94,9 @@ void RegisterDetectCommand(CLI::App& app, CliContext& context) {
       detect::ApplyOptionsFile(arguments->options_file, &options.objects, &options.fusion);
       if (command->count("--every") > 0) options.objects.every = flags.objects.every;
       if (command->count("--min-views") > 0) options.fusion.min_views = flags.fusion.min_views;
+      if (command->count("--min-seen-share") > 0) {
+        options.fusion.min_seen_share = flags.fusion.min_seen_share;
+      }
       if (command->count("--association-radius") > 0) {
         options.fusion.association_radius_m = flags.fusion.association_radius_m;
       }

@@ -9,10 +9,11 @@ namespace littermap::detect {
 FrameCallback DebugFrameWriter(const std::filesystem::path& directory) {
   if (directory.empty()) return {};
   std::filesystem::create_directories(directory);
-  return [directory](const RgbdFrame& frame, const FrameSegmentation& segmentation) {
+  return [directory](const ProcessedFrame& processed) {
     char name[64];
-    std::snprintf(name, sizeof name, "frame_%06zu.png", frame.index);
-    bag::WriteImageFile(directory / name, DrawSegmentation(frame.colour_bgr, segmentation));
+    std::snprintf(name, sizeof name, "frame_%06zu.png", processed.frame.index);
+    bag::WriteImageFile(directory / name,
+                        DrawSegmentation(processed.frame.colour_bgr, processed.segmentation));
   };
 }
 

@@ -5,12 +5,9 @@
 #include <filesystem>
 #include <functional>
 
-#include "detect/frame_segmenter.hpp"
-#include "detect/rgbd_frames.hpp"
+#include "detect/run_objects.hpp"
 
 namespace littermap::detect {
-
-using FrameCallback = std::function<void(const RgbdFrame&, const FrameSegmentation&)>;
 
 // An `on_frame` callback for ForEachRunObject and the detect stage that writes each frame's
 // picture into `directory`, which is created now; an empty callback for an empty directory. The

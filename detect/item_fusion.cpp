@@ -9,6 +9,9 @@ namespace littermap::detect {
 void FusionOptions::Validate() const {
   if (!(association_radius_m > 0)) throw UsageError("detect: association_radius_m must be > 0");
   if (min_views < 1) throw UsageError("detect: min_views must be >= 1");
+  if (!(min_seen_share >= 0 && min_seen_share <= 1)) {
+    throw UsageError("detect: min_seen_share must be in [0, 1]");
+  }
 }
 
 ItemFusion::ItemFusion(FusionOptions options, std::size_t classes)
@@ -48,20 +51,34 @@ std::size_t ItemFusion::Add(const Sighting& sighting) {
   for (std::size_t k = 0; k < classes_; ++k)
     track.probability_sum[k] += sighting.class_probabilities[k];
   ++track.views;
+  track.last_frame = sighting.frame;
   track.first_seen_ns = std::min(track.first_seen_ns, sighting.stamp_ns);
   track.last_seen_ns = std::max(track.last_seen_ns, sighting.stamp_ns);
   return best;
 }
 
+void ItemFusion::Observe(std::size_t frame,
+                         const std::function<bool(const Eigen::Vector3d&, double)>& could_see) {
+  for (Track& track : tracks_) {
+    if (track.last_frame != frame && could_see(track.mean(), track.size_sum / track.views)) {
+      ++track.missed_views;
+    }
+  }
+}
+
 std::vector<LitterItem> ItemFusion::Items() const {
   std::vector<LitterItem> items;
   for (const Track& track : tracks_) {
-    if (track.views < options_.min_views) continue;
+    if (track.views < options_.min_views ||
+        track.views < options_.min_seen_share * (track.views + track.missed_views)) {
+      continue;
+    }
     LitterItem item;
     item.id = static_cast<int>(items.size()) + 1;
     item.position_world_m = track.mean();
     item.size_m = track.size_sum / track.views;
     item.views = track.views;
+    item.missed_views = track.missed_views;
     item.first_seen_ns = track.first_seen_ns;
     item.last_seen_ns = track.last_seen_ns;
     item.class_probabilities = track.probability_sum;

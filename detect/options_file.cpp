@@ -137,6 +137,7 @@ const OptionSetters<O>& Setters() {
       {"association_radius_m",
        Set<double>([](O& o) -> double& { return o.fusion.association_radius_m; })},
       {"min_views", Set<int>([](O& o) -> int& { return o.fusion.min_views; })},
+      {"min_seen_share", Set<double>([](O& o) -> double& { return o.fusion.min_seen_share; })},
   };
   return setters;
 }

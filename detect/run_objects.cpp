@@ -51,11 +51,12 @@ std::optional<Eigen::Isometry3d> InterpolatePose(const std::vector<StampedPose>&
   return T;
 }
 
-RunObjectsResult ForEachRunObject(
-    const std::filesystem::path& bag, const std::vector<StampedPose>& trajectory,
-    const RunObjectsOptions& options, const ProgressCallback& progress,
-    const std::function<void(const PlacedObject&)>& visit,
-    const std::function<void(const RgbdFrame&, const FrameSegmentation&)>& on_frame) {
+RunObjectsResult ForEachRunObject(const std::filesystem::path& bag,
+                                  const std::vector<StampedPose>& trajectory,
+                                  const RunObjectsOptions& options,
+                                  const ProgressCallback& progress,
+                                  const std::function<void(const PlacedObject&)>& visit,
+                                  const FrameCallback& on_frame) {
   options.Validate();
   if (trajectory.empty()) throw BadInputError("detect: the trajectory has no pose");
   const RgbdFrameReader reader(bag, options.frames);
@@ -71,9 +72,9 @@ RunObjectsResult ForEachRunObject(
       ++result.frames_without_pose;
       return;
     }
+    const Eigen::Isometry3f T_level_camera = LevelledCamera(reader.T_base_camera(), frame.tilt);
     const FrameSegmentation segmentation =
-        segmenter.Segment(frame.colour_bgr, frame.depth_mm, reader.intrinsics(),
-                          LevelledCamera(reader.T_base_camera(), frame.tilt));
+        segmenter.Segment(frame.colour_bgr, frame.depth_mm, reader.intrinsics(), T_level_camera);
     ++result.frames;
     result.frames_without_ground += !segmentation.ground_found;
     result.time += segmentation.timings;
@@ -87,7 +88,10 @@ RunObjectsResult ForEachRunObject(
       ++result.objects;
       visit(placed);
     }
-    if (on_frame) on_frame(frame, segmentation);
+    if (on_frame) {
+      on_frame({frame, segmentation, *T_world_base * T_level_camera.cast<double>(),
+                reader.intrinsics()});
+    }
   });
   return result;
 }

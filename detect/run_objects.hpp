@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "bag/tum_trajectory.hpp"
 #include "core/progress.hpp"
@@ -33,6 +34,15 @@ struct PlacedObject {
   ObjectSample sample;  // crop, mask and geometry; no label
 };
 
+// A segmented frame and where its camera was: what `on_frame` sees.
+struct ProcessedFrame {
+  const RgbdFrame& frame;
+  const FrameSegmentation& segmentation;
+  Eigen::Isometry3d T_world_camera;  // the optical frame in the trajectory's world
+  const CameraIntrinsics& intrinsics;
+};
+using FrameCallback = std::function<void(const ProcessedFrame&)>;
+
 struct RunObjectsResult {
   std::size_t frames = 0;  // segmented
   std::size_t frames_without_pose = 0;
@@ -41,13 +51,14 @@ struct RunObjectsResult {
   SegmentationTimings time;  // summed over the frames
 };
 
-// Visits the objects of every processed frame; `on_frame` (optional) sees each frame's
-// segmentation after its objects. Throws BadInputError for a bag or trajectory at fault.
-RunObjectsResult ForEachRunObject(
-    const std::filesystem::path& bag, const std::vector<StampedPose>& trajectory,
-    const RunObjectsOptions& options, const ProgressCallback& progress,
-    const std::function<void(const PlacedObject&)>& visit,
-    const std::function<void(const RgbdFrame&, const FrameSegmentation&)>& on_frame = {});
+// Visits the objects of every processed frame; `on_frame` (optional) sees each frame with a pose
+// after its objects. Throws BadInputError for a bag or trajectory at fault.
+RunObjectsResult ForEachRunObject(const std::filesystem::path& bag,
+                                  const std::vector<StampedPose>& trajectory,
+                                  const RunObjectsOptions& options,
+                                  const ProgressCallback& progress,
+                                  const std::function<void(const PlacedObject&)>& visit,
+                                  const FrameCallback& on_frame = {});
 
 // T_world_base at stamp_ns, linearly interpolated (yaw by the shorter arc) between the two
 // trajectory poses around it; nullopt outside the trajectory or across a gap > max_gap_s.

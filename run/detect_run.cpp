@@ -5,6 +5,7 @@
 
 #include "bag/tum_trajectory.hpp"
 #include "core/output_folder.hpp"
+#include "detect/item_visibility.hpp"
 #include "detect/litter_classifier.hpp"
 #include "run/detections_file.hpp"
 #include "run/items_file.hpp"
@@ -15,8 +16,7 @@ namespace littermap::run {
 
 DetectRunResult DetectRun(const std::filesystem::path& bag, const std::filesystem::path& run_dir,
                           const DetectRunOptions& options, const ProgressCallback& progress,
-                          const std::function<void(const detect::RgbdFrame&,
-                                                   const detect::FrameSegmentation&)>& on_frame) {
+                          const detect::FrameCallback& on_frame) {
   DetectRunResult result;
   result.output_dir = options.output_dir.empty() ? run_dir : options.output_dir;
   PrepareOutputFolder(result.output_dir, {"-o", RunFiles::Names(), options.force_output});
@@ -27,6 +27,9 @@ DetectRunResult DetectRun(const std::filesystem::path& bag, const std::filesyste
   const RunFiles output(result.output_dir);
   DetectionsCsvWriter detections(output.detections());
   detect::ItemFusion fusion(options.fusion, classifier.classes().size());
+  detect::ItemVisibilityOptions visibility;
+  visibility.min_depth_m = options.objects.segmentation.cloud.min_depth_m;
+  visibility.max_depth_m = options.objects.segmentation.cloud.max_depth_m;
   detect::RunObjectsOptions objects = options.objects;
   const bag::SensorRoles roles = ResolveBagRoles(bag, options.topic_roles, objects.frames.topics);
   objects.frames.topics = roles.topics;
@@ -44,7 +47,12 @@ DetectRunResult DetectRun(const std::filesystem::path& bag, const std::filesyste
         }
         detections.Write(placed, classifier.classes()[c.best], c, item);
       },
-      on_frame);
+      [&](const detect::ProcessedFrame& processed) {
+        fusion.Observe(processed.frame.index, [&](const Eigen::Vector3d& place, double size_m) {
+          return detect::FrameCouldSee(processed, place, size_m, visibility);
+        });
+        if (on_frame) on_frame(processed);
+      });
   detections.Close();
   const ItemsWritten items = WriteItemsCsv(output.items(), fusion.Items(), classifier);
   result.litter_items = items.litter;

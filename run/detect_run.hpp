@@ -39,11 +39,9 @@ struct DetectRunResult {
 
 // `on_frame` (optional) sees each processed frame's segmentation. Throws BadInputError for a bag,
 // trajectory or model at fault, UsageError for an output that cannot be written.
-DetectRunResult DetectRun(
-    const std::filesystem::path& bag, const std::filesystem::path& run_dir,
-    const DetectRunOptions& options, const ProgressCallback& progress = {},
-    const std::function<void(const detect::RgbdFrame&, const detect::FrameSegmentation&)>&
-        on_frame = {});
+DetectRunResult DetectRun(const std::filesystem::path& bag, const std::filesystem::path& run_dir,
+                          const DetectRunOptions& options, const ProgressCallback& progress = {},
+                          const detect::FrameCallback& on_frame = {});
 
 // What the run came to: "wrote DIR: N frames, ... seen in >= min_views views" and the
 // segmentation's time line.

@@ -15,7 +15,8 @@ ItemsWritten WriteItemsCsv(const std::filesystem::path& file,
                            const detect::LitterClassifier& classifier) {
   OutputFile output(file);
   std::ostream& out = output.stream();
-  out << "id,class,x,y,z,size_m,confidence,views,litter,litter_probability,first_seen_ns,"
+  out << "id,class,x,y,z,size_m,confidence,views,missed_views,litter,litter_probability,first_seen_"
+         "ns,"
          "last_seen_ns\n";
   const std::size_t clutter = classifier.ClassIndex("clutter");
   ItemsWritten written;
@@ -30,11 +31,11 @@ ItemsWritten WriteItemsCsv(const std::filesystem::path& file,
       if (classifier.is_litter(k)) litter_probability += item.class_probabilities[k];
     }
     char line[320];
-    std::snprintf(line, sizeof line, "%d,%s,%.3f,%.3f,%.3f,%.3f,%.3f,%d,%d,%.3f,%lld,%lld", item.id,
-                  classifier.classes()[item.best_class].c_str(), item.position_world_m.x(),
+    std::snprintf(line, sizeof line, "%d,%s,%.3f,%.3f,%.3f,%.3f,%.3f,%d,%d,%d,%.3f,%lld,%lld",
+                  item.id, classifier.classes()[item.best_class].c_str(), item.position_world_m.x(),
                   item.position_world_m.y(), item.position_world_m.z(), item.size_m,
-                  item.confidence, item.views, litter ? 1 : 0, litter_probability,
-                  static_cast<long long>(item.first_seen_ns),
+                  item.confidence, item.views, item.missed_views, litter ? 1 : 0,
+                  litter_probability, static_cast<long long>(item.first_seen_ns),
                   static_cast<long long>(item.last_seen_ns));
     out << line << '\n';
   }

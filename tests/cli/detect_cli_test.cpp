@@ -6,7 +6,9 @@
 
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
@@ -38,8 +40,17 @@ TEST(DetectCli, EndToEndOnTheFirst45SecondsOfTheSamplePark) {
   std::string header;
   std::getline(items, header);
   EXPECT_EQ(header,
-            "id,class,x,y,z,size_m,confidence,views,litter,litter_probability,first_seen_ns,"
-            "last_seen_ns");
+            "id,class,x,y,z,size_m,confidence,views,missed_views,litter,litter_probability,"
+            "first_seen_ns,last_seen_ns");
+  // Every item kept was seen in at least three quarters of the frames that could see it.
+  for (std::string line; std::getline(items, line);) {
+    std::vector<std::string> fields;
+    std::stringstream row(line);
+    for (std::string field; std::getline(row, field, ',');) fields.push_back(field);
+    ASSERT_EQ(fields.size(), 13u) << line;
+    const int views = std::stoi(fields[7]), missed = std::stoi(fields[8]);
+    EXPECT_GE(views, 3 * missed) << line;
+  }
   const auto eval = RunLittermap("eval detections " + Quote(d / "run" / "items.csv") + " " +
                                  Quote(d / "truth" / "litter.csv") + " --natural " +
                                  Quote(d / "truth" / "natural.csv") + " --visible " +

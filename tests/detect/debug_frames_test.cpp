@@ -14,6 +14,13 @@
 namespace littermap::detect {
 namespace {
 
+const CameraIntrinsics kIntrinsics;
+const FrameSegmentation kNothingSegmented;
+
+ProcessedFrame Processed(const RgbdFrame& frame) {
+  return {frame, kNothingSegmented, Eigen::Isometry3d::Identity(), kIntrinsics};
+}
+
 TEST(DebugFrames, WritesAPictureOfEveryFrame) {
   test::TempDir dir;
   const FrameCallback write = DebugFrameWriter(dir / "frames" / "run");
@@ -22,7 +29,7 @@ TEST(DebugFrames, WritesAPictureOfEveryFrame) {
   RgbdFrame frame;
   frame.index = 7;
   frame.colour_bgr = cv::Mat(12, 16, CV_8UC3, cv::Scalar(10, 20, 30));
-  write(frame, FrameSegmentation{});
+  write(Processed(frame));
   const cv::Mat picture = cv::imread((dir / "frames" / "run" / "frame_000007.png").string());
   ASSERT_FALSE(picture.empty());
   EXPECT_EQ(picture.size(), frame.colour_bgr.size());
@@ -39,7 +46,7 @@ TEST(DebugFrames, AFileThatCannotBeWrittenIsNamed) {
   frame.index = 1;
   frame.colour_bgr = cv::Mat(4, 4, CV_8UC3, cv::Scalar::all(0));
   try {
-    write(frame, FrameSegmentation{});
+    write(Processed(frame));
     ADD_FAILURE() << "no error";
   } catch (const Error& error) {  // a folder where the file belongs: the path is at fault
     EXPECT_EQ(error.kind(), ErrorKind::kBadInput);

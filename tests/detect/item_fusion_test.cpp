@@ -59,6 +59,48 @@ TEST(ItemFusion, NearSightingsCountMoreThanFarOnes) {
   EXPECT_NEAR(items[0].position_world_m.x(), 0.3 / 10.0, 1e-9);
 }
 
+TEST(ItemFusion, FramesThatCouldSeeAnItemAndDidNotAreMissedViews) {
+  ItemFusion fusion({0.25, 1, 0.0}, 1);
+  const auto in_view = [](const Eigen::Vector3d& place, double) { return place.x() < 2; };
+  for (std::size_t frame = 0; frame < 10; ++frame) {
+    if (frame < 4) {  // seen in frames 0-3 at x 1 and in frame 0 only at x 3 (out of view)
+      Sighting near = At(1, 0, {1.0});
+      near.frame = frame;
+      fusion.Add(near);
+      if (frame == 0) fusion.Add(At(3, 0, {1.0}));
+    }
+    fusion.Observe(frame, in_view);
+  }
+  const auto items = fusion.Items();
+  ASSERT_EQ(items.size(), 2u);
+  EXPECT_EQ(items[0].views, 4);
+  EXPECT_EQ(items[0].missed_views, 6);  // frames 4-9: in view, not seen
+  EXPECT_NEAR(items[0].seen_share(), 0.4, 1e-12);
+  EXPECT_EQ(items[1].missed_views, 0);  // never in view again
+  EXPECT_EQ(items[1].seen_share(), 1.0);
+}
+
+// Items kept of one seen in frames 0, 2 and 4 of five frames that could all see it (share 0.6).
+std::size_t ItemsSeenInThreeOfFiveFrames(double min_seen_share) {
+  ItemFusion fusion({0.25, 1, min_seen_share}, 1);
+  for (std::size_t frame = 0; frame < 5; ++frame) {
+    if (frame % 2 == 0) {
+      Sighting s = At(1, 0, {1.0});
+      s.frame = frame;
+      fusion.Add(s);
+    }
+    fusion.Observe(frame, [](const Eigen::Vector3d&, double) { return true; });
+  }
+  return fusion.Items().size();
+}
+
+TEST(ItemFusion, ItemsSeenInTooSmallAShareOfTheirChancesAreDropped) {
+  EXPECT_EQ(ItemsSeenInThreeOfFiveFrames(0.5), 1u);
+  EXPECT_EQ(ItemsSeenInThreeOfFiveFrames(0.6), 1u);
+  EXPECT_EQ(ItemsSeenInThreeOfFiveFrames(0.61), 0u);
+  EXPECT_THROW(ItemFusion({0.25, 1, 1.5}, 1), UsageError);
+}
+
 TEST(ItemFusion, RejectsBadOptionsAndProbabilityCounts) {
   EXPECT_THROW(ItemFusion({0.0, 3}, 2), UsageError);
   EXPECT_THROW(ItemFusion({0.2, 0}, 2), UsageError);

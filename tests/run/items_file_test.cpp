@@ -69,9 +69,9 @@ TEST(ItemsFile, ErrorsNameFileLineAndColumn) {
 TEST(ItemsFile, ReadsTheDetectStagesColumns) {
   test::TempDir dir;
   WriteFile(dir / "items.csv",
-            "id,class,x,y,z,size_m,confidence,views,litter,litter_probability,first_seen_ns,"
-            "last_seen_ns\n3,can,1.250,-0.500,0.040,0.110,0.870,5,1,0.930,10,20\n"
-            "4,leaf,2.000,3.000,0.010,0.080,0.600,3,0,0.100,30,40\n");
+            "id,class,x,y,z,size_m,confidence,views,missed_views,litter,litter_probability,"
+            "first_seen_ns,last_seen_ns\n3,can,1.250,-0.500,0.040,0.110,0.870,5,1,1,0.930,10,20\n"
+            "4,leaf,2.000,3.000,0.010,0.080,0.600,3,0,0,0.100,30,40\n");
   const auto items = ReadItemsCsv(dir / "items.csv");
   ASSERT_EQ(items.size(), 2u);
   EXPECT_EQ(items[0].litter, true);

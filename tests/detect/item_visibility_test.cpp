@@ -1,0 +1,62 @@
+// Whether a frame could have seen a place: in the image, within the depth range, large enough,
+// not hidden behind a nearer reading, and with ground found in the frame.
+
+#include "detect/item_visibility.hpp"
+
+#include <gtest/gtest.h>
+
+namespace littermap::detect {
+namespace {
+
+// A frame whose camera is the world's origin (optical frame: z ahead) measuring a wall 3 m away.
+struct WallFrame {
+  RgbdFrame frame;
+  FrameSegmentation segmentation;
+  CameraIntrinsics intrinsics;
+  WallFrame() {
+    frame.depth_mm = cv::Mat(480, 640, CV_16U, cv::Scalar(3000));
+    segmentation.ground_found = true;
+  }
+  ProcessedFrame Processed() const {
+    return {frame, segmentation, Eigen::Isometry3d::Identity(), intrinsics};
+  }
+};
+
+TEST(ItemVisibility, APlaceInViewBeforeTheMeasuredSurfaceCouldBeSeen) {
+  const WallFrame wall;
+  const ItemVisibilityOptions options;
+  EXPECT_TRUE(FrameCouldSee(wall.Processed(), {0, 0, 2.0}, 0.1, options));
+  EXPECT_TRUE(FrameCouldSee(wall.Processed(), {0.5, 0.2, 2.9}, 0.1, options));  // on the wall
+  // Behind the wall (3.5 m against a 3 m reading): hidden.
+  EXPECT_FALSE(FrameCouldSee(wall.Processed(), {0, 0, 3.5}, 0.1, options));
+}
+
+TEST(ItemVisibility, OutOfTheImageOrTheDepthRangeCannotBeSeen) {
+  const WallFrame wall;
+  const ItemVisibilityOptions options;
+  EXPECT_FALSE(FrameCouldSee(wall.Processed(), {0, 0, -2.0}, 0.1, options));  // behind
+  EXPECT_FALSE(FrameCouldSee(wall.Processed(), {0, 0, 0.3}, 0.1, options));   // too near
+  EXPECT_FALSE(FrameCouldSee(wall.Processed(), {3, 0, 2.0}, 0.1, options));   // right of view
+  // At 1 m, 0.6 m right is u = 525 * 0.6 + 319.5 = 634.5: in the image, within its 10 px border;
+  // 0.58 m right is u = 624, clear of it.
+  EXPECT_FALSE(FrameCouldSee(wall.Processed(), {0.6, 0, 1.0}, 0.1, options));
+  EXPECT_TRUE(FrameCouldSee(wall.Processed(), {0.58, 0, 1.0}, 0.1, options));
+  // 1 cm at 2 m is 2.6 px: too small to segment.
+  EXPECT_FALSE(FrameCouldSee(wall.Processed(), {0, 0, 2.0}, 0.01, options));
+  ItemVisibilityOptions far = options;
+  far.max_depth_m = 1.5;
+  EXPECT_FALSE(FrameCouldSee(wall.Processed(), {0, 0, 2.0}, 0.1, far));
+}
+
+TEST(ItemVisibility, NoDepthOrNoGroundSeesNothing) {
+  WallFrame wall;
+  const ItemVisibilityOptions options;
+  wall.frame.depth_mm(cv::Rect(310, 230, 20, 20)).setTo(0);  // no reading around the centre
+  EXPECT_FALSE(FrameCouldSee(wall.Processed(), {0, 0, 2.0}, 0.1, options));
+  EXPECT_TRUE(FrameCouldSee(wall.Processed(), {0.3, 0, 2.0}, 0.1, options));
+  wall.segmentation.ground_found = false;
+  EXPECT_FALSE(FrameCouldSee(wall.Processed(), {0.3, 0, 2.0}, 0.1, options));
+}
+
+}  // namespace
+}  // namespace littermap::detect
