@@ -21,9 +21,19 @@ struct ItemVisibilityOptions {
   double min_object_px = 12;        // the object's size as seen from there, at least
   double occlusion_margin_m = 0.2;  // depth measured this much nearer than the place: hidden
   int depth_window_px = 2;          // the depth there: median of the (2w+1)^2 window's readings
+  void Validate() const;
 };
 
-bool FrameCouldSee(const ProcessedFrame& frame, const Eigen::Vector3d& position_world_m,
-                   double size_m, const ItemVisibilityOptions& options);
+// One frame's view, asked about every item the frame did not see.
+class FrameVisibility {
+ public:
+  FrameVisibility(const ProcessedFrame& frame, const ItemVisibilityOptions& options);
+  bool CouldSee(const Eigen::Vector3d& position_world_m, double size_m) const;
+
+ private:
+  const ProcessedFrame& frame_;
+  ItemVisibilityOptions options_;
+  Eigen::Isometry3d T_camera_world_;
+};
 
 }  // namespace littermap::detect

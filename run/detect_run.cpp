@@ -48,8 +48,9 @@ DetectRunResult DetectRun(const std::filesystem::path& bag, const std::filesyste
         detections.Write(placed, classifier.classes()[c.best], c, item);
       },
       [&](const detect::ProcessedFrame& processed) {
+        const detect::FrameVisibility view(processed, visibility);
         fusion.Observe(processed.frame.index, [&](const Eigen::Vector3d& place, double size_m) {
-          return detect::FrameCouldSee(processed, place, size_m, visibility);
+          return view.CouldSee(place, size_m);
         });
         if (on_frame) on_frame(processed);
       });
