@@ -22,7 +22,7 @@ void DetectStage(const std::filesystem::path& bag, const std::filesystem::path& 
                                                      detect::DebugFrameWriter(debug_frames));
   context.FinishProgress();
   for (const std::string& warning : result.warnings) context.Warn(warning);
-  std::printf("%s\n", run::DetectSummary(result, options.fusion.min_views).c_str());
+  std::printf("%s\n", run::DetectSummary(result, options.fusion).c_str());
 }
 
 }  // namespace

@@ -66,13 +66,20 @@ void ItemFusion::Observe(std::size_t frame,
   }
 }
 
+bool ItemFusion::SeldomSeen(const Track& track) const {
+  return track.views < options_.min_seen_share * (track.views + track.missed_views);
+}
+
+std::size_t ItemFusion::seldom_seen() const {
+  return static_cast<std::size_t>(std::count_if(
+      tracks_.begin(), tracks_.end(),
+      [&](const Track& t) { return t.views >= options_.min_views && SeldomSeen(t); }));
+}
+
 std::vector<LitterItem> ItemFusion::Items() const {
   std::vector<LitterItem> items;
   for (const Track& track : tracks_) {
-    if (track.views < options_.min_views ||
-        track.views < options_.min_seen_share * (track.views + track.missed_views)) {
-      continue;
-    }
+    if (track.views < options_.min_views || SeldomSeen(track)) continue;
     LitterItem item;
     item.id = static_cast<int>(items.size()) + 1;
     item.position_world_m = track.mean();

@@ -62,6 +62,8 @@ class ItemFusion {
                const std::function<bool(const Eigen::Vector3d&, double)>& could_see);
   // Items with at least min_views views, numbered from 1 in order of first sighting.
   std::vector<LitterItem> Items() const;
+  // Candidates with enough views that Items() leaves out for their seen share.
+  std::size_t seldom_seen() const;
   std::size_t candidates() const { return tracks_.size(); }
 
  private:
@@ -75,6 +77,7 @@ class ItemFusion {
     TimestampNs first_seen_ns = 0, last_seen_ns = 0;
     Eigen::Vector3d mean() const { return weighted_sum / weight; }
   };
+  bool SeldomSeen(const Track& track) const;
   FusionOptions options_;
   std::size_t classes_;
   std::vector<Track> tracks_;

@@ -94,7 +94,7 @@ std::vector<Stage> Stages(Survey& survey) {
     const run::DetectRunResult result =
         run::DetectRun(survey.options.bag, survey.run_dir, survey.options.detect, progress);
     survey.Warn(result.warnings);
-    survey.Print(run::DetectSummary(result, survey.options.detect.fusion.min_views));
+    survey.Print(run::DetectSummary(result, survey.options.detect.fusion));
   };
   const auto ingest = [&survey](const ProgressCallback&) {
     site::RunDirectoryIngestOptions run;

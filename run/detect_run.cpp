@@ -58,6 +58,7 @@ DetectRunResult DetectRun(const std::filesystem::path& bag, const std::filesyste
   const ItemsWritten items = WriteItemsCsv(output.items(), fusion.Items(), classifier);
   result.litter_items = items.litter;
   result.natural_objects = items.natural;
+  result.seldom_seen = fusion.seldom_seen();
   if (result.objects.frames_without_pose > 0) {
     result.warnings.push_back(std::to_string(result.objects.frames_without_pose) +
                               " frames lay outside the trajectory and were skipped");
@@ -65,13 +66,15 @@ DetectRunResult DetectRun(const std::filesystem::path& bag, const std::filesyste
   return result;
 }
 
-std::string DetectSummary(const DetectRunResult& result, int min_views) {
-  char figures[256];
+std::string DetectSummary(const DetectRunResult& result, const detect::FusionOptions& fusion) {
+  char figures[320];
   std::snprintf(figures, sizeof figures,
                 "%zu frames, %zu objects, %zu litter items and %zu natural objects seen in >= %d "
-                "views",
+                "views and >= %.0f%% of the frames that could see them; %zu seen in fewer were "
+                "dropped",
                 result.objects.frames, result.objects.objects, result.litter_items,
-                result.natural_objects, min_views);
+                result.natural_objects, fusion.min_views, 100 * fusion.min_seen_share,
+                result.seldom_seen);
   return "wrote " + result.output_dir.string() + ": " + figures + "\n" +
          SegmentationTimeLine(result.objects);
 }

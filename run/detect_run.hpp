@@ -34,6 +34,7 @@ struct DetectRunResult {
   detect::RunObjectsResult objects;  // frames, objects, frames without a pose, timings
   std::size_t litter_items = 0;      // in items.csv
   std::size_t natural_objects = 0;
+  std::size_t seldom_seen = 0;  // candidates dropped: seen in too few of the frames that could
   std::vector<std::string> warnings;  // for the user's attention
 };
 
@@ -43,9 +44,9 @@ DetectRunResult DetectRun(const std::filesystem::path& bag, const std::filesyste
                           const DetectRunOptions& options, const ProgressCallback& progress = {},
                           const detect::FrameCallback& on_frame = {});
 
-// What the run came to: "wrote DIR: N frames, ... seen in >= min_views views" and the
+// What the run came to: "wrote DIR: N frames, ... seen in >= min_views views and ..." and the
 // segmentation's time line.
-std::string DetectSummary(const DetectRunResult& result, int min_views);
+std::string DetectSummary(const DetectRunResult& result, const detect::FusionOptions& fusion);
 
 // Milliseconds per frame of the segmentation, in total and by step.
 std::string SegmentationTimeLine(const detect::RunObjectsResult& result);

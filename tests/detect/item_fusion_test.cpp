@@ -80,8 +80,8 @@ TEST(ItemFusion, FramesThatCouldSeeAnItemAndDidNotAreMissedViews) {
   EXPECT_EQ(items[1].seen_share(), 1.0);
 }
 
-// Items kept of one seen in frames 0, 2 and 4 of five frames that could all see it (share 0.6).
-std::size_t ItemsSeenInThreeOfFiveFrames(double min_seen_share) {
+// One item seen in frames 0, 2 and 4 of five frames that could all see it (share 0.6).
+ItemFusion SeenInThreeOfFiveFrames(double min_seen_share) {
   ItemFusion fusion({0.25, 1, min_seen_share}, 1);
   for (std::size_t frame = 0; frame < 5; ++frame) {
     if (frame % 2 == 0) {
@@ -91,13 +91,16 @@ std::size_t ItemsSeenInThreeOfFiveFrames(double min_seen_share) {
     }
     fusion.Observe(frame, [](const Eigen::Vector3d&, double) { return true; });
   }
-  return fusion.Items().size();
+  return fusion;
 }
 
 TEST(ItemFusion, ItemsSeenInTooSmallAShareOfTheirChancesAreDropped) {
-  EXPECT_EQ(ItemsSeenInThreeOfFiveFrames(0.5), 1u);
-  EXPECT_EQ(ItemsSeenInThreeOfFiveFrames(0.6), 1u);
-  EXPECT_EQ(ItemsSeenInThreeOfFiveFrames(0.61), 0u);
+  for (const double kept : {0.5, 0.6}) {
+    EXPECT_EQ(SeenInThreeOfFiveFrames(kept).Items().size(), 1u) << kept;
+    EXPECT_EQ(SeenInThreeOfFiveFrames(kept).seldom_seen(), 0u) << kept;
+  }
+  EXPECT_TRUE(SeenInThreeOfFiveFrames(0.61).Items().empty());
+  EXPECT_EQ(SeenInThreeOfFiveFrames(0.61).seldom_seen(), 1u);
   EXPECT_THROW(ItemFusion({0.25, 1, 1.5}, 1), UsageError);
 }
 
