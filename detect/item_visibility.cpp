@@ -1,11 +1,11 @@
 #include "detect/item_visibility.hpp"
 
-#include "core/error.hpp"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+
+#include "core/error.hpp"
 
 namespace littermap::detect {
 namespace {

@@ -31,7 +31,7 @@ class FrameVisibility {
   bool CouldSee(const Eigen::Vector3d& position_world_m, double size_m) const;
 
  private:
-  const ProcessedFrame& frame_;
+  ProcessedFrame frame_;  // a copy: the caller's may be a temporary
   ItemVisibilityOptions options_;
   Eigen::Isometry3d T_camera_world_;
 };

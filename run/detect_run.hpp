@@ -34,12 +34,13 @@ struct DetectRunResult {
   detect::RunObjectsResult objects;  // frames, objects, frames without a pose, timings
   std::size_t litter_items = 0;      // in items.csv
   std::size_t natural_objects = 0;
-  std::size_t seldom_seen = 0;  // candidates dropped: seen in too few of the frames that could
+  std::size_t seldom_seen = 0;        // candidates dropped for their seen share (min_seen_share)
   std::vector<std::string> warnings;  // for the user's attention
 };
 
-// `on_frame` (optional) sees each processed frame's segmentation. Throws BadInputError for a bag,
-// trajectory or model at fault, UsageError for an output that cannot be written.
+// `on_frame` (optional) sees each processed frame: its segmentation and camera pose. Throws
+// BadInputError for a bag, trajectory or model at fault, UsageError for an output that cannot be
+// written.
 DetectRunResult DetectRun(const std::filesystem::path& bag, const std::filesystem::path& run_dir,
                           const DetectRunOptions& options, const ProgressCallback& progress = {},
                           const detect::FrameCallback& on_frame = {});

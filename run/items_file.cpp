@@ -15,9 +15,8 @@ ItemsWritten WriteItemsCsv(const std::filesystem::path& file,
                            const detect::LitterClassifier& classifier) {
   OutputFile output(file);
   std::ostream& out = output.stream();
-  out << "id,class,x,y,z,size_m,confidence,views,missed_views,litter,litter_probability,first_seen_"
-         "ns,"
-         "last_seen_ns\n";
+  out << "id,class,x,y,z,size_m,confidence,views,missed_views,litter,litter_probability,"
+         "first_seen_ns,last_seen_ns\n";
   const std::size_t clutter = classifier.ClassIndex("clutter");
   ItemsWritten written;
   for (detect::LitterItem item : items) {

@@ -1,6 +1,7 @@
 #pragma once
 // RUN_DIR/items.csv, the fused items of a run, one row each:
-//   id,class,x,y,z,size_m,confidence,views,missed_views,litter,litter_probability,first_seen_ns,last_seen_ns
+//   id,class,x,y,z,size_m,confidence,views,missed_views,litter,litter_probability,first_seen_ns,
+//   last_seen_ns
 // metres in the run's map frame; `class` the classifier's final decision over the item's mean
 // class probabilities, `confidence` its probability, `missed_views` the frames after its first
 // sighting that could have seen it and did not, `litter` 1 for litter classes and 0 for
