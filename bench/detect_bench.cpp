@@ -19,6 +19,7 @@
 
 #include "detect/frame_segmenter.hpp"
 #include "detect/litter_classifier.hpp"
+#include "detect/options_file.hpp"
 #include "sim/rgbd_camera.hpp"
 
 namespace littermap {
@@ -61,9 +62,16 @@ void SegmentAndClassify(benchmark::State& state, const std::vector<Frame>& frame
                         const Eigen::Isometry3f& T_level_camera) {
   const auto classifier = detect::LitterClassifier::Load(
       LITTERMAP_SOURCE_DIR "/samples/models/litter_classifier.yml.gz");
-  // The benchmark's arguments: the normal step (organized_cloud.hpp: 1 = every pixel) and the
-  // normal method (0 PCL covariance, 1 OpenCV FALS, 2 PCL average 3D gradient).
-  detect::SegmentationOptions options;
+  // The benchmark's arguments: the normal step (organized_cloud.hpp: 1 = every pixel), the
+  // normal method (0 PCL covariance, 1 OpenCV FALS, 2 PCL average 3D gradient) and the options:
+  // 0 the defaults, 1 samples/detect_fast.yaml (the geometry on every 2nd pixel).
+  detect::RunObjectsOptions run_options;
+  detect::FusionOptions fusion;
+  if (state.range(2) == 1) {
+    detect::ApplyOptionsFile(LITTERMAP_SOURCE_DIR "/samples/detect_fast.yaml", &run_options,
+                             &fusion);
+  }
+  detect::SegmentationOptions options = run_options.segmentation;
   options.cloud.normal_step_px = static_cast<int>(state.range(0));
   const detect::NormalMethod methods[] = {detect::NormalMethod::kCovariance,
                                           detect::NormalMethod::kFals,
@@ -115,11 +123,10 @@ void BM_ParkFrames(benchmark::State& state) {
                      T_base_optical().cast<float>());
 }
 BENCHMARK(BM_ParkFrames)
-    ->ArgNames({"normal_step", "method"})
-    ->Args({1, 0})
-    ->Args({2, 0})
-    ->Args({1, 1})
-    ->Args({1, 2})
+    ->ArgNames({"normal_step", "method", "fast"})
+    ->Args({1, 0, 0})
+    ->Args({1, 1, 0})
+    ->Args({1, 1, 1})
     ->Unit(benchmark::kMillisecond)
     ->MinTime(2.0)
     ->Repetitions(5)
@@ -148,11 +155,10 @@ void BM_TumDeskFrames(benchmark::State& state) {
   SegmentAndClassify(state, frames, K, T_level_optical.cast<float>());
 }
 BENCHMARK(BM_TumDeskFrames)
-    ->ArgNames({"normal_step", "method"})
-    ->Args({1, 0})
-    ->Args({2, 0})
-    ->Args({1, 1})
-    ->Args({1, 2})
+    ->ArgNames({"normal_step", "method", "fast"})
+    ->Args({1, 0, 0})
+    ->Args({1, 1, 0})
+    ->Args({1, 1, 1})
     ->Unit(benchmark::kMillisecond)
     ->MinTime(2.0)
     ->Repetitions(5)

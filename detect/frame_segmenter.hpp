@@ -23,6 +23,13 @@ struct SegmentationOptions {
   GroundOptions ground;
   TextureRefinementOptions texture;
   ObjectClusterOptions objects;
+  // The frame's geometry (normals, components, the ground and its texture cut) is computed on
+  // every geometry_step_px-th pixel of every geometry_step_px-th row; objects are then refined
+  // by GrabCut and measured at full resolution, so their outlines keep the image's detail.
+  // Pixel counts and sizes of the options are of the full image at every step. A step of 2 is
+  // the camera's rate on one core (with GrabCut boxes of box_margin 0.3, max_refine_pixels
+  // 3000), at some cost in items found: README's `detect` section has the figures.
+  int geometry_step_px = 1;
   void Validate() const;
 };
 
@@ -41,10 +48,10 @@ struct SegmentationTimings {
 
 struct FrameSegmentation {
   bool ground_found = false;
-  std::size_t ground_points = 0;
+  std::size_t ground_points = 0;  // pixels of the full image (geometry_step_px^2 per sample)
   double ground_rms_m = 0;
   GroundSurface ground;
-  TextureRefinementResult refinement;  // labels before the cut, non-ground after it
+  TextureRefinementResult refinement;  // labels before the cut, non-ground after it; full size
   std::vector<SegmentedObject> objects;
   std::size_t components = 0;
   std::size_t blobs = 0;
@@ -63,9 +70,12 @@ class FrameSegmenter {
                             const Eigen::Isometry3f& T_level_camera);
 
  private:
-  SegmentationOptions options_;
+  SegmentationOptions options_;   // as given
+  SegmentationOptions geometry_;  // the same at the geometry's resolution
   OrganizedCloudBuilder cloud_builder_;
-  OrganizedCloud cloud_;
+  OrganizedCloud cloud_;        // at the geometry's resolution, with normals
+  OrganizedCloud full_points_;  // every pixel's point, when the geometry's step is over 1
+  cv::Mat colour_, depth_mm_;   // the images at the geometry's resolution
 };
 
 // A picture of the result for people: ground tinted blue, uncertain pixels yellow, non-ground

@@ -31,11 +31,16 @@ OptionSetter<O> SetDepthNoise() {
 
 const OptionSetters<O>& Setters() {
   static const OptionSetters<O> setters = {
+      // The resolution of the frame's geometry.
+      {"geometry_step_px",
+       Set<int>([](O& o) -> int& { return o.objects.segmentation.geometry_step_px; })},
       // The organized cloud and its normals.
       {"min_depth_m",
        Set<float>([](O& o) -> float& { return o.objects.segmentation.cloud.min_depth_m; })},
       {"max_depth_m",
        Set<float>([](O& o) -> float& { return o.objects.segmentation.cloud.max_depth_m; })},
+      {"fals_window_px",
+       Set<int>([](O& o) -> int& { return o.objects.segmentation.cloud.fals_window_px; })},
       {"normal_smoothing_px",
        Set<float>([](O& o) -> float& { return o.objects.segmentation.cloud.normal_smoothing_px; })},
       {"max_depth_change_factor", Set<float>([](O& o) -> float& {

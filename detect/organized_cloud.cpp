@@ -18,18 +18,10 @@ namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
-// Back-projects every pixel (points, depths) and every step-th pixel of every step-th row into
-// the cloud the normals are estimated on.
-void FillCameraCloud(const cv::Mat& depth_mm, const CameraIntrinsics& intrinsics,
-                     const OrganizedCloudOptions& options, std::vector<Eigen::Vector3f>* points,
-                     std::vector<float>* depth_m, pcl::PointCloud<pcl::PointXYZ>* coarse) {
-  const int step = options.normal_step_px;
-  const auto coarse_width = static_cast<std::uint32_t>(depth_mm.cols / step);
-  const auto coarse_height = static_cast<std::uint32_t>(depth_mm.rows / step);
-  if (coarse->width != coarse_width || coarse->height != coarse_height) {
-    coarse->resize(coarse_width, coarse_height);
-  }
-  coarse->is_dense = false;
+// Back-projects every pixel into camera-frame points and depths (NaN and 0 where there is none).
+void FillCameraPoints(const cv::Mat& depth_mm, const CameraIntrinsics& intrinsics,
+                      const OrganizedCloudOptions& options, std::vector<Eigen::Vector3f>* points,
+                      std::vector<float>* depth_m) {
   depth_m->resize(depth_mm.total());
   points->resize(depth_mm.total());
   // The rays' slopes, one per column and per row, as BackProject computes them.
@@ -51,12 +43,32 @@ void FillCameraCloud(const cv::Mat& depth_mm, const CameraIntrinsics& intrinsics
       (*depth_m)[i] = valid ? z : 0.0f;
     }
   }
+}
+
+// Every step-th point of every step-th row: the cloud the normals are estimated on.
+void FillCoarseCloud(const std::vector<Eigen::Vector3f>& points, int width, int height, int step,
+                     pcl::PointCloud<pcl::PointXYZ>* coarse) {
+  const auto coarse_width = static_cast<std::uint32_t>(width / step);
+  const auto coarse_height = static_cast<std::uint32_t>(height / step);
+  if (coarse->width != coarse_width || coarse->height != coarse_height) {
+    coarse->resize(coarse_width, coarse_height);
+  }
+  coarse->is_dense = false;
   for (std::uint32_t cv = 0; cv < coarse_height; ++cv) {
     const std::size_t first = static_cast<std::size_t>(cv) * static_cast<std::size_t>(step) *
-                              static_cast<std::size_t>(depth_mm.cols);
+                              static_cast<std::size_t>(width);
     for (std::uint32_t cu = 0; cu < coarse_width; ++cu) {
-      (*coarse)(cu, cv).getVector3fMap() = (*points)[first + cu * static_cast<std::size_t>(step)];
+      (*coarse)(cu, cv).getVector3fMap() = points[first + cu * static_cast<std::size_t>(step)];
     }
+  }
+}
+
+void CheckDepthImage(const cv::Mat& depth_mm, const CameraIntrinsics& intrinsics) {
+  if (depth_mm.type() != CV_16UC1 || depth_mm.cols != intrinsics.width ||
+      depth_mm.rows != intrinsics.height) {
+    throw UsageError("segmentation: depth image is not CV_16UC1 of " +
+                     std::to_string(intrinsics.width) + "x" + std::to_string(intrinsics.height) +
+                     " as the camera info says");
   }
 }
 
@@ -75,6 +87,8 @@ void OrganizedCloudOptions::Validate() const {
         "segmentation: normal_step_px must be from 1 to 8 and at most "
         "normal_smoothing_px");
   }
+  RequireOption(fals_window_px >= 1 && fals_window_px <= 7 && fals_window_px % 2 == 1,
+                "segmentation", "fals_window_px", "1, 3, 5 or 7");
 }
 
 struct OrganizedCloudBuilder::Pcl {
@@ -88,15 +102,13 @@ struct OrganizedCloudBuilder::Pcl {
 
 namespace {
 
-constexpr int kFalsWindowPx = 5;
-
 // OpenCV's FALS normals of the coarse cloud into `normals` (as PCL's estimator would fill it). A
 // window that holds a point without depth has no normal; one that crosses a depth step of more
 // than max_depth_change_factor of the depth, between neighbouring pixels, gets none either, as
 // PCL leaves the pixels next to an edge without one (FALS would average across the step).
 void FalsNormals(const pcl::PointCloud<pcl::PointXYZ>& cloud, float max_depth_change_factor,
-                 cv::rgbd::RgbdNormals& fals, cv::Mat& points, cv::Mat& normals, cv::Mat& edges,
-                 pcl::PointCloud<pcl::Normal>* out) {
+                 int window_px, cv::rgbd::RgbdNormals& fals, cv::Mat& points, cv::Mat& normals,
+                 cv::Mat& edges, pcl::PointCloud<pcl::Normal>* out) {
   const int width = static_cast<int>(cloud.width), height = static_cast<int>(cloud.height);
   points.create(height, width, CV_32FC3);
   edges.create(height, width, CV_8UC1);
@@ -116,8 +128,7 @@ void FalsNormals(const pcl::PointCloud<pcl::PointXYZ>& cloud, float max_depth_ch
     }
   }
   fals(points, normals);
-  cv::dilate(edges, edges,
-             cv::getStructuringElement(cv::MORPH_RECT, {kFalsWindowPx, kFalsWindowPx}));
+  cv::dilate(edges, edges, cv::getStructuringElement(cv::MORPH_RECT, {window_px, window_px}));
   for (int v = 0; v < height; ++v) {
     const auto* n = normals.ptr<cv::Vec3f>(v);
     const auto* edge = edges.ptr<std::uint8_t>(v);
@@ -169,15 +180,11 @@ OrganizedCloudBuilder::~OrganizedCloudBuilder() = default;
 
 void OrganizedCloudBuilder::Build(const cv::Mat& depth_mm, const CameraIntrinsics& intrinsics,
                                   const Eigen::Isometry3f& T_level_camera, OrganizedCloud* out) {
-  if (depth_mm.type() != CV_16UC1 || depth_mm.cols != intrinsics.width ||
-      depth_mm.rows != intrinsics.height) {
-    throw UsageError("segmentation: depth image is not CV_16UC1 of " +
-                     std::to_string(intrinsics.width) + "x" + std::to_string(intrinsics.height) +
-                     " as the camera info says");
-  }
+  CheckDepthImage(depth_mm, intrinsics);
   out->width = depth_mm.cols;
   out->height = depth_mm.rows;
-  FillCameraCloud(depth_mm, intrinsics, options_, &out->points_m, &out->depth_m,
+  FillCameraPoints(depth_mm, intrinsics, options_, &out->points_m, &out->depth_m);
+  FillCoarseCloud(out->points_m, out->width, out->height, options_.normal_step_px,
                   pcl_->coarse.get());
   if (options_.normal_method == NormalMethod::kFals) {
     const int width = static_cast<int>(pcl_->coarse->width);
@@ -188,13 +195,13 @@ void OrganizedCloudBuilder::Build(const cv::Mat& depth_mm, const CameraIntrinsic
                           static_cast<float>(intrinsics.cx / step), 0,
                           static_cast<float>(intrinsics.fy / step),
                           static_cast<float>(intrinsics.cy / step), 0, 0, 1);
-      pcl_->fals =
-          std::make_unique<cv::rgbd::RgbdNormals>(height, width, CV_32F, cv::Mat(K), kFalsWindowPx,
-                                                  cv::rgbd::RgbdNormals::RGBD_NORMALS_METHOD_FALS);
+      pcl_->fals = std::make_unique<cv::rgbd::RgbdNormals>(
+          height, width, CV_32F, cv::Mat(K), options_.fals_window_px,
+          cv::rgbd::RgbdNormals::RGBD_NORMALS_METHOD_FALS);
     }
     pcl_->normals.resize(pcl_->coarse->width, pcl_->coarse->height);
-    FalsNormals(*pcl_->coarse, options_.max_depth_change_factor, *pcl_->fals, pcl_->points,
-                pcl_->fals_normals, pcl_->edges, &pcl_->normals);
+    FalsNormals(*pcl_->coarse, options_.max_depth_change_factor, options_.fals_window_px,
+                *pcl_->fals, pcl_->points, pcl_->fals_normals, pcl_->edges, &pcl_->normals);
   } else {
     pcl_->estimator.setInputCloud(pcl_->coarse);
     pcl_->estimator.compute(pcl_->normals);
@@ -223,6 +230,19 @@ void OrganizedCloudBuilder::Build(const cv::Mat& depth_mm, const CameraIntrinsic
       if (std::isfinite(n.normal_x))
         normal = R * Eigen::Vector3f(n.normal_x, n.normal_y, n.normal_z);
     }
+  }
+}
+
+void BuildPoints(const cv::Mat& depth_mm, const CameraIntrinsics& intrinsics,
+                 const Eigen::Isometry3f& T_level_camera, const OrganizedCloudOptions& options,
+                 OrganizedCloud* out) {
+  CheckDepthImage(depth_mm, intrinsics);
+  out->width = depth_mm.cols;
+  out->height = depth_mm.rows;
+  FillCameraPoints(depth_mm, intrinsics, options, &out->points_m, &out->depth_m);
+  out->normals.clear();
+  for (std::size_t i = 0; i < out->points_m.size(); ++i) {
+    if (out->depth_m[i] > 0) out->points_m[i] = T_level_camera * out->points_m[i];
   }
 }
 

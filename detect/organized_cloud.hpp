@@ -16,11 +16,11 @@
 
 namespace littermap::detect {
 
-// OpenCV's FALS (cv::rgbd::RgbdNormals: a least-squares plane in a 5 x 5 window, by box
+// OpenCV's FALS (cv::rgbd::RgbdNormals: a least-squares plane in a window, by box
 // filters), or PCL's integral-image normal estimators (pcl::IntegralImageNormalEstimation). FALS
-// is the default: 8 ms a park frame on one core against 45 ms for PCL's covariance normals, and
-// segmentation IoU 0.680 against 0.647 (mean of the demo's week 1 and world seeds 11 and 12;
-// window 3: 0.664, 7: 0.657).
+// is the default: 8 ms a full-resolution park frame on one core against 45 ms for PCL's covariance
+// normals, and segmentation IoU 0.680 against 0.647 (mean of the demo's week 1 and world seeds 11
+// and 12; window 3: 0.664, 7: 0.657).
 enum class NormalMethod {
   kCovariance,
   kAverage3dGradient,
@@ -33,8 +33,10 @@ struct OrganizedCloudOptions {
   float min_depth_m = 0.4f;  // nearer readings are sensor artefacts on a Kinect-class camera
   float max_depth_m = 4.5f;  // litter of a few cm is a handful of pixels beyond
   NormalMethod normal_method = NormalMethod::kFals;
-  // PCL's methods: the neighbourhood size in pixels of the full image (FALS: 5 x 5 always).
+  // PCL's methods: the neighbourhood size in pixels of the full image.
   float normal_smoothing_px = 10.0f;
+  // FALS: the side of the window in pixels of the cloud (odd; OpenCV allows 1 to 7).
+  int fals_window_px = 5;
   // The depth change (relative to depth) between neighbouring pixels that is an edge: PCL stops
   // smoothing there; FALS leaves every pixel whose window holds one without a normal.
   float max_depth_change_factor = 0.02f;
@@ -51,8 +53,9 @@ struct OrganizedCloud {
   int width = 0;
   int height = 0;
   std::vector<Eigen::Vector3f> points_m;  // level frame; NaN where there is no depth
-  std::vector<Eigen::Vector3f> normals;   // level frame, unit, towards the camera; NaN if unknown
-  std::vector<float> depth_m;             // optical-axis depth, 0 where there is none
+  // Level frame, unit, towards the camera; NaN if unknown. Empty in a cloud of points only.
+  std::vector<Eigen::Vector3f> normals;
+  std::vector<float> depth_m;  // optical-axis depth, 0 where there is none
 
   int Index(int u, int v) const { return v * width + u; }
   bool HasPoint(int i) const { return depth_m[static_cast<std::size_t>(i)] > 0; }
@@ -79,5 +82,11 @@ class OrganizedCloudBuilder {
   OrganizedCloudOptions options_;
   std::unique_ptr<Pcl> pcl_;
 };
+
+// The points alone (no normals) of a depth image, in the level frame: what objects are measured
+// on when the normals were estimated at a coarser level. Throws as Build does.
+void BuildPoints(const cv::Mat& depth_mm, const CameraIntrinsics& intrinsics,
+                 const Eigen::Isometry3f& T_level_camera, const OrganizedCloudOptions& options,
+                 OrganizedCloud* cloud);
 
 }  // namespace littermap::detect

@@ -68,6 +68,23 @@ TEST(DetectOptionsFile, BadKeysAndValuesNameTheFileAndKey) {
                        range.string() + ": segmentation: max_size_m must be > min_size_m");
   const auto step = Write(dir, "normal_step_px: 20\n");
   test::ExpectBadInput(apply(step), "normal_step_px must be from 1 to 8");
+  const auto geometry = Write(dir, "geometry_step_px: 5\n");
+  test::ExpectBadInput(apply(geometry), "geometry_step_px must be from 1 to 4");
+  const auto window = Write(dir, "fals_window_px: 4\n");
+  test::ExpectBadInput(apply(window), "fals_window_px must be 1, 3, 5 or 7");
+}
+
+// The shipped profile for the camera's rate reads, and differs from the defaults where it says.
+TEST(DetectOptionsFile, TheFastProfileSetsTheGeometryStepAndTheGrabCutBoxes) {
+  RunObjectsOptions objects;
+  FusionOptions fusion;
+  ApplyOptionsFile(LITTERMAP_SOURCE_DIR "/samples/detect_fast.yaml", &objects, &fusion);
+  const SegmentationOptions& s = objects.segmentation;
+  EXPECT_EQ(SegmentationOptions{}.geometry_step_px, 1);
+  EXPECT_EQ(s.geometry_step_px, 2);
+  EXPECT_EQ(s.objects.box_margin, 0.3);
+  EXPECT_EQ(s.objects.max_refine_pixels, 3000);
+  EXPECT_EQ(s.cloud.fals_window_px, OrganizedCloudOptions{}.fals_window_px);
 }
 
 TEST(DetectOptionsFile, TheReadmeDocumentsEveryKey) {

@@ -14,6 +14,9 @@
 #include <utility>
 #include <vector>
 
+#include <opencv2/imgproc.hpp>
+
+#include "core/error.hpp"
 #include "synthetic_scene.hpp"
 
 namespace littermap::detect {
@@ -98,6 +101,36 @@ TEST_P(OrganizedCloudTest, GroundAndBoxFacesPointTheirWayAndADepthStepHasNone) {
                 Percentile(*angles, 0.5), Percentile(*angles, 0.95), angles->size());
   }
   EXPECT_EQ(next_to_step_with_normal, 0);
+}
+
+// The cloud of points alone holds the same points as the cloud with normals, and no normals.
+TEST(OrganizedCloudPoints, AreTheCloudsPointsWithoutNormals) {
+  SyntheticScene scene;
+  scene.boxes.push_back({{1.2, -0.15, 0.0}, {1.5, 0.15, 0.3}, {30, 30, 200}});
+  const CameraIntrinsics K;
+  cv::Mat colour, depth_mm;
+  RenderScene(scene, K, &colour, &depth_mm);
+  const Eigen::Isometry3f T_level_camera = test::CameraPose().cast<float>();
+  OrganizedCloudBuilder builder{OrganizedCloudOptions{}};
+  OrganizedCloud cloud, points;
+  builder.Build(depth_mm, K, T_level_camera, &cloud);
+  BuildPoints(depth_mm, K, T_level_camera, OrganizedCloudOptions{}, &points);
+  ASSERT_EQ(points.width, cloud.width);
+  ASSERT_EQ(points.height, cloud.height);
+  EXPECT_TRUE(points.normals.empty());
+  ASSERT_EQ(points.points_m.size(), cloud.points_m.size());
+  std::size_t with_depth = 0;
+  for (std::size_t i = 0; i < cloud.points_m.size(); ++i) {
+    ASSERT_EQ(points.depth_m[i], cloud.depth_m[i]) << i;
+    if (!(cloud.depth_m[i] > 0)) continue;
+    ++with_depth;
+    ASSERT_TRUE(points.points_m[i].isApprox(cloud.points_m[i])) << i;
+  }
+  EXPECT_GT(with_depth, 200000u);
+  // A depth image of the wrong size is refused as Build refuses it.
+  cv::Mat half;
+  cv::resize(depth_mm, half, {320, 240}, 0, 0, cv::INTER_NEAREST);
+  EXPECT_THROW(BuildPoints(half, K, T_level_camera, OrganizedCloudOptions{}, &points), UsageError);
 }
 
 }  // namespace
