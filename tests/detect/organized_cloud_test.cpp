@@ -36,6 +36,15 @@ double Percentile(std::vector<double> values, double share) {
   return values[k];
 }
 
+// The depth image of a 30 cm box standing on the ground 1.2 m ahead.
+cv::Mat BoxOnTheGround(const CameraIntrinsics& K) {
+  SyntheticScene scene;
+  scene.boxes.push_back({{1.2, -0.15, 0.0}, {1.5, 0.15, 0.3}, {30, 30, 200}});
+  cv::Mat colour, depth_mm;
+  RenderScene(scene, K, &colour, &depth_mm);
+  return depth_mm;
+}
+
 class OrganizedCloudTest : public ::testing::TestWithParam<NormalMethod> {};
 
 std::string MethodName(const ::testing::TestParamInfo<NormalMethod>& method) {
@@ -47,11 +56,8 @@ INSTANTIATE_TEST_SUITE_P(Methods, OrganizedCloudTest,
                          MethodName);
 
 TEST_P(OrganizedCloudTest, GroundAndBoxFacesPointTheirWayAndADepthStepHasNone) {
-  SyntheticScene scene;
-  scene.boxes.push_back({{1.2, -0.15, 0.0}, {1.5, 0.15, 0.3}, {30, 30, 200}});
   const CameraIntrinsics K;
-  cv::Mat colour, depth_mm;
-  RenderScene(scene, K, &colour, &depth_mm);
+  const cv::Mat depth_mm = BoxOnTheGround(K);
   OrganizedCloudOptions options;
   options.normal_method = GetParam();
   OrganizedCloudBuilder builder(options);
@@ -105,11 +111,8 @@ TEST_P(OrganizedCloudTest, GroundAndBoxFacesPointTheirWayAndADepthStepHasNone) {
 
 // The cloud of points alone holds the same points as the cloud with normals, and no normals.
 TEST(OrganizedCloudPoints, AreTheCloudsPointsWithoutNormals) {
-  SyntheticScene scene;
-  scene.boxes.push_back({{1.2, -0.15, 0.0}, {1.5, 0.15, 0.3}, {30, 30, 200}});
   const CameraIntrinsics K;
-  cv::Mat colour, depth_mm;
-  RenderScene(scene, K, &colour, &depth_mm);
+  const cv::Mat depth_mm = BoxOnTheGround(K);
   const Eigen::Isometry3f T_level_camera = test::CameraPose().cast<float>();
   OrganizedCloudBuilder builder{OrganizedCloudOptions{}};
   OrganizedCloud cloud, points;
