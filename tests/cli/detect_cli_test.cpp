@@ -64,14 +64,34 @@ TEST(DetectCli, EndToEndOnTheFirst45SecondsOfTheSamplePark) {
   EXPECT_LE(json.at("false_positives").get<int>(), 1) << eval.output;
   EXPECT_GE(json.at("litter_natural_accuracy").get<double>(), 0.75) << eval.output;
 
-  // Segmentation IoU on the instance masks: objects with 100+ depth pixels are mostly cut out.
-  result = RunLittermap("eval segmentation " + Quote(d / "bag") + " " + Quote(d / "truth") +
-                        " --json --quiet");
+  // Segmentation IoU on the instance masks: objects with 100+ depth pixels are mostly cut out,
+  // by the defaults and by the camera-rate profile (the geometry at half resolution).
+  const auto fast = std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "detect_fast.yaml";
+  for (const std::string& options : {std::string(), " --options " + Quote(fast)}) {
+    result = RunLittermap("eval segmentation " + Quote(d / "bag") + " " + Quote(d / "truth") +
+                          options + " --json --quiet");
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    const auto iou = nlohmann::json::parse(result.output);
+    ASSERT_TRUE(iou.contains("all")) << result.output;
+    EXPECT_GE(iou["all"]["objects"].get<int>(), 5);
+    EXPECT_GE(iou["all"]["mean_iou"].get<double>(), 0.5) << options << ": " << result.output;
+  }
+
+  // The camera-rate profile finds the same items within the same tolerances.
+  result =
+      RunLittermap("detect " + Quote(d / "bag") + " --run " + Quote(d / "run") + " -o " +
+                   Quote(d / "fast") + " --trajectory " + Quote(d / "truth" / "trajectory.tum") +
+                   " --options " + Quote(fast) + " --every 2 --quiet");
   ASSERT_EQ(result.exit_code, 0) << result.output;
-  const auto iou = nlohmann::json::parse(result.output);
-  ASSERT_TRUE(iou.contains("all")) << result.output;
-  EXPECT_GE(iou["all"]["objects"].get<int>(), 5);
-  EXPECT_GE(iou["all"]["mean_iou"].get<double>(), 0.5) << result.output;
+  const auto fast_eval = RunLittermap("eval detections " + Quote(d / "fast" / "items.csv") + " " +
+                                      Quote(d / "truth" / "litter.csv") + " --natural " +
+                                      Quote(d / "truth" / "natural.csv") + " --visible " +
+                                      Quote(d / "truth" / "masks" / "visible.csv") + " --json");
+  ASSERT_EQ(fast_eval.exit_code, 0) << fast_eval.output;
+  const auto fast_json = nlohmann::json::parse(fast_eval.output);
+  EXPECT_GE(fast_json.at("true_positives").get<int>(), 2) << fast_eval.output;
+  EXPECT_LE(fast_json.at("false_positives").get<int>(), 1) << fast_eval.output;
+  EXPECT_GE(fast_json.at("litter_natural_accuracy").get<double>(), 0.75) << fast_eval.output;
 
   // samples + train make a model detect can use.
   result = RunLittermap("samples " + Quote(d / "bag") + " --truth " + Quote(d / "truth") + " -o " +
