@@ -88,14 +88,14 @@ FrameSegmentation FrameSegmenter::Segment(const cv::Mat& colour_bgr, const cv::M
                cv::INTER_NEAREST);
     cv::resize(colour_bgr(cv::Rect(cv::Point(0, 0), size * step)), colour_, size, 0, 0,
                cv::INTER_AREA);
-  } else {
-    depth_mm_ = depth_mm;
-    colour_ = colour_bgr;
   }
-  cloud_builder_.Build(depth_mm_, K, T_level_camera, &cloud_);
+  // The images the geometry works on: the full ones at step 1.
+  const cv::Mat& depth = step > 1 ? depth_mm_ : depth_mm;
+  const cv::Mat& colour = step > 1 ? colour_ : colour_bgr;
+  cloud_builder_.Build(depth, K, T_level_camera, &cloud_);
   const OrganizedCloud& cloud = cloud_;
   out.timings.cloud_ms = MsSince(&clock);
-  const Components components = LabelComponents(cloud, colour_, options.components);
+  const Components components = LabelComponents(cloud, colour, options.components);
   out.components = components.sizes.size();
   out.timings.components_ms = MsSince(&clock);
   const GroundResult ground = FindGround(cloud, components, options.ground);
@@ -104,7 +104,7 @@ FrameSegmentation FrameSegmenter::Segment(const cv::Mat& colour_bgr, const cv::M
   out.ground_rms_m = ground.rms_residual_m;
   out.ground = ground.surface;
   out.timings.ground_ms = MsSince(&clock);
-  out.refinement = RefineGroundByTexture(colour_, cloud, ground, options.texture);
+  out.refinement = RefineGroundByTexture(colour, cloud, ground, options.texture);
   if (step > 1) {
     out.refinement.labels = ToFullSize(out.refinement.labels, colour_bgr.size(), step);
     out.refinement.non_ground = ToFullSize(out.refinement.non_ground, colour_bgr.size(), step);

@@ -75,7 +75,7 @@ class FrameSegmenter {
   OrganizedCloudBuilder cloud_builder_;
   OrganizedCloud cloud_;        // at the geometry's resolution, with normals
   OrganizedCloud full_points_;  // every pixel's point, when the geometry's step is over 1
-  cv::Mat colour_, depth_mm_;   // the images at the geometry's resolution
+  cv::Mat colour_, depth_mm_;   // the images at the geometry's resolution, when over 1
 };
 
 // A picture of the result for people: ground tinted blue, uncertain pixels yellow, non-ground

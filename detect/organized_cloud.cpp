@@ -63,13 +63,19 @@ void FillCoarseCloud(const std::vector<Eigen::Vector3f>& points, int width, int 
   }
 }
 
-void CheckDepthImage(const cv::Mat& depth_mm, const CameraIntrinsics& intrinsics) {
+// Checks the depth image against the intrinsics and fills the cloud's size, camera-frame points
+// and depths. Throws UsageError for an image that is not CV_16UC1 of the intrinsics' size.
+void FillCameraCloud(const cv::Mat& depth_mm, const CameraIntrinsics& intrinsics,
+                     const OrganizedCloudOptions& options, OrganizedCloud* out) {
   if (depth_mm.type() != CV_16UC1 || depth_mm.cols != intrinsics.width ||
       depth_mm.rows != intrinsics.height) {
     throw UsageError("segmentation: depth image is not CV_16UC1 of " +
                      std::to_string(intrinsics.width) + "x" + std::to_string(intrinsics.height) +
                      " as the camera info says");
   }
+  out->width = depth_mm.cols;
+  out->height = depth_mm.rows;
+  FillCameraPoints(depth_mm, intrinsics, options, &out->points_m, &out->depth_m);
 }
 
 }  // namespace
@@ -180,10 +186,7 @@ OrganizedCloudBuilder::~OrganizedCloudBuilder() = default;
 
 void OrganizedCloudBuilder::Build(const cv::Mat& depth_mm, const CameraIntrinsics& intrinsics,
                                   const Eigen::Isometry3f& T_level_camera, OrganizedCloud* out) {
-  CheckDepthImage(depth_mm, intrinsics);
-  out->width = depth_mm.cols;
-  out->height = depth_mm.rows;
-  FillCameraPoints(depth_mm, intrinsics, options_, &out->points_m, &out->depth_m);
+  FillCameraCloud(depth_mm, intrinsics, options_, out);
   FillCoarseCloud(out->points_m, out->width, out->height, options_.normal_step_px,
                   pcl_->coarse.get());
   if (options_.normal_method == NormalMethod::kFals) {
@@ -236,10 +239,7 @@ void OrganizedCloudBuilder::Build(const cv::Mat& depth_mm, const CameraIntrinsic
 void BuildPoints(const cv::Mat& depth_mm, const CameraIntrinsics& intrinsics,
                  const Eigen::Isometry3f& T_level_camera, const OrganizedCloudOptions& options,
                  OrganizedCloud* out) {
-  CheckDepthImage(depth_mm, intrinsics);
-  out->width = depth_mm.cols;
-  out->height = depth_mm.rows;
-  FillCameraPoints(depth_mm, intrinsics, options, &out->points_m, &out->depth_m);
+  FillCameraCloud(depth_mm, intrinsics, options, out);
   out->normals.clear();
   for (std::size_t i = 0; i < out->points_m.size(); ++i) {
     if (out->depth_m[i] > 0) out->points_m[i] = T_level_camera * out->points_m[i];

@@ -20,6 +20,22 @@ using test::RunLittermap;
 
 using test::Quote;
 
+// Items scored against the truth of the 45 s: three litter items in view, at least two found (one
+// may be missed at --every 2), at most one false alarm among the look-alikes, most natural items
+// recognised as natural.
+void ExpectTheLitterFound(const std::filesystem::path& items, const std::filesystem::path& truth) {
+  const auto eval =
+      RunLittermap("eval detections " + Quote(items) + " " + Quote(truth / "litter.csv") +
+                   " --natural " + Quote(truth / "natural.csv") + " --visible " +
+                   Quote(truth / "masks" / "visible.csv") + " --json");
+  ASSERT_EQ(eval.exit_code, 0) << eval.output;
+  const auto json = nlohmann::json::parse(eval.output);
+  EXPECT_EQ(json.at("truth_litter").get<int>(), 3) << items << ": " << eval.output;
+  EXPECT_GE(json.at("true_positives").get<int>(), 2) << items << ": " << eval.output;
+  EXPECT_LE(json.at("false_positives").get<int>(), 1) << items << ": " << eval.output;
+  EXPECT_GE(json.at("litter_natural_accuracy").get<double>(), 0.75) << items << ": " << eval.output;
+}
+
 // One simulation for all checks: ctest runs every test in its own process.
 TEST(DetectCli, EndToEndOnTheFirst45SecondsOfTheSamplePark) {
   test::TempDir d;
@@ -51,18 +67,7 @@ TEST(DetectCli, EndToEndOnTheFirst45SecondsOfTheSamplePark) {
     const int views = std::stoi(fields[7]), missed = std::stoi(fields[8]);
     EXPECT_GE(views, 3 * missed) << line;
   }
-  const auto eval = RunLittermap("eval detections " + Quote(d / "run" / "items.csv") + " " +
-                                 Quote(d / "truth" / "litter.csv") + " --natural " +
-                                 Quote(d / "truth" / "natural.csv") + " --visible " +
-                                 Quote(d / "truth" / "masks" / "visible.csv") + " --json");
-  ASSERT_EQ(eval.exit_code, 0) << eval.output;
-  const auto json = nlohmann::json::parse(eval.output);
-  // Three litter items in view: at least two found (one may be missed at --every 2), at most one
-  // false alarm among the look-alikes, most natural items recognised as natural.
-  EXPECT_EQ(json.at("truth_litter").get<int>(), 3) << eval.output;
-  EXPECT_GE(json.at("true_positives").get<int>(), 2) << eval.output;
-  EXPECT_LE(json.at("false_positives").get<int>(), 1) << eval.output;
-  EXPECT_GE(json.at("litter_natural_accuracy").get<double>(), 0.75) << eval.output;
+  ExpectTheLitterFound(d / "run" / "items.csv", d / "truth");
 
   // Segmentation IoU on the instance masks: objects with 100+ depth pixels are mostly cut out,
   // by the defaults and by the camera-rate profile (the geometry at half resolution).
@@ -83,15 +88,7 @@ TEST(DetectCli, EndToEndOnTheFirst45SecondsOfTheSamplePark) {
                    Quote(d / "fast") + " --trajectory " + Quote(d / "truth" / "trajectory.tum") +
                    " --options " + Quote(fast) + " --every 2 --quiet");
   ASSERT_EQ(result.exit_code, 0) << result.output;
-  const auto fast_eval = RunLittermap("eval detections " + Quote(d / "fast" / "items.csv") + " " +
-                                      Quote(d / "truth" / "litter.csv") + " --natural " +
-                                      Quote(d / "truth" / "natural.csv") + " --visible " +
-                                      Quote(d / "truth" / "masks" / "visible.csv") + " --json");
-  ASSERT_EQ(fast_eval.exit_code, 0) << fast_eval.output;
-  const auto fast_json = nlohmann::json::parse(fast_eval.output);
-  EXPECT_GE(fast_json.at("true_positives").get<int>(), 2) << fast_eval.output;
-  EXPECT_LE(fast_json.at("false_positives").get<int>(), 1) << fast_eval.output;
-  EXPECT_GE(fast_json.at("litter_natural_accuracy").get<double>(), 0.75) << fast_eval.output;
+  ExpectTheLitterFound(d / "fast" / "items.csv", d / "truth");
 
   // samples + train make a model detect can use.
   result = RunLittermap("samples " + Quote(d / "bag") + " --truth " + Quote(d / "truth") + " -o " +
