@@ -46,7 +46,9 @@ struct FusionOptions {
   int min_views = 3;
   // Items seen in a smaller share of the frames that could see them (Observe) are dropped: three
   // in four, chosen on six of the classifier's training parks (seeds 41-56, true trajectory),
-  // where it dropped 9 of 15 false litter items and 1 of 86 true ones.
+  // where it dropped 9 of 15 false litter items and 1 of 86 true ones. Checked again by two-fold
+  // cross-validation over all 24 training parks: shares 0.6, 0.75 and 0.85 give precision / recall
+  // 0.946 / 0.929, 0.949 / 0.929 and 0.951 / 0.923 (argmax decision of kinds).
   double min_seen_share = 0.75;
   void Validate() const;
 };

@@ -52,7 +52,12 @@ bool FrameVisibility::CouldSee(const Eigen::Vector3d& position_world_m, double s
   if (count == 0) return false;  // no depth there: nothing can be segmented
   const auto middle = readings.begin() + static_cast<long>(count / 2);
   std::nth_element(readings.begin(), middle, readings.begin() + static_cast<long>(count));
-  return 1e-3 * double(*middle) >= z - options_.occlusion_margin_m;
+  if (1e-3 * double(*middle) < z - options_.occlusion_margin_m) return false;
+  // Something was cut out there (an object too large with its neighbour, or clutter this time):
+  // the frame saw an object at the place, not ground.
+  const cv::Mat& non_ground = frame_.segmentation.refinement.non_ground;
+  if (non_ground.empty()) return true;
+  return cv::countNonZero(non_ground(cv::Rect(u - w, v - w, 2 * w + 1, 2 * w + 1))) == 0;
 }
 
 }  // namespace littermap::detect

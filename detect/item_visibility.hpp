@@ -1,9 +1,10 @@
 #pragma once
 // Whether a processed frame could have seen an object at a place in the world: the place projects
 // into the image clear of its border, lies within the depth range segmentation uses, is large
-// enough in the image for an object of its size to be segmented, and the depth measured there is
-// not nearer (something in front hides it). ItemFusion::Observe counts the frames that could see
-// an item and did not.
+// enough in the image for an object of its size to be segmented, the depth measured there is not
+// nearer (something in front hides it), and segmentation labelled no pixel there non-ground (a
+// frame that cut something out at the place saw an object, if not as this item).
+// ItemFusion::Observe counts the frames that could see an item and did not.
 
 #include <Eigen/Core>
 

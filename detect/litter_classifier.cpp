@@ -250,18 +250,12 @@ Classification LitterClassifier::Classify(const ObjectSample& object) const {
 }
 
 std::size_t LitterClassifier::Decide(const std::vector<double>& probabilities) const {
-  // Kinds: the litter classes together; every other class on its own.
+  // Litter or not first: the litter classes together against the rest together, so an object
+  // is litter when that is more likely than not. Then the most likely class of that kind.
   const std::size_t n = probabilities.size();
-  double litter = 0;
-  std::size_t best_other = n;
-  for (std::size_t k = 0; k < n; ++k) {
-    if (model_->litter[k]) {
-      litter += probabilities[k];
-    } else if (best_other == n || probabilities[k] > probabilities[best_other]) {
-      best_other = k;
-    }
-  }
-  const bool choose_litter = best_other == n || litter >= probabilities[best_other];
+  double litter = 0, other = 0;
+  for (std::size_t k = 0; k < n; ++k) (model_->litter[k] ? litter : other) += probabilities[k];
+  const bool choose_litter = litter >= other;
   std::size_t best = n;
   for (std::size_t k = 0; k < n; ++k) {
     if ((model_->litter[k] != 0) != choose_litter) continue;

@@ -54,9 +54,11 @@ class LitterClassifier {
 
   Classification Classify(const ObjectSample& object) const;
   // The class for a probability vector, decided in two steps as the thesis's insight suggests
-  // (the real split is natural vs not): first the kind with the largest summed probability
-  // (litter classes together, natural, clutter), then the likeliest class of that kind. Seven
-  // litter classes sharing one object's votes must not lose to one natural class.
+  // (the real split is litter vs not): litter when the litter classes together are at least as
+  // likely as the other classes together, then the likeliest class of that kind. Seven litter
+  // classes sharing one object's votes must not lose to one natural class, and an object more
+  // likely not litter than litter is not litter, however the rest split between natural and
+  // clutter.
   std::size_t Decide(const std::vector<double>& probabilities) const;
   // The class one method alone picks (kCombined: Classify's best).
   std::size_t Predict(const ObjectSample& object, ClassifierMethod method) const;

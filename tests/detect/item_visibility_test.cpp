@@ -57,6 +57,19 @@ TEST(ItemVisibility, OutOfTheImageOrTheDepthRangeCannotBeSeen) {
   EXPECT_FALSE(FrameVisibility(wall.Processed(), far).CouldSee({0, 0, 2.0}, 0.1));
 }
 
+TEST(ItemVisibility, APlaceWhereSegmentationCutOutSomethingWasNotMissed) {
+  // The frame's segmentation found a non-ground region over the image centre (an object too large
+  // with its neighbour, say, or called clutter this time): the frame saw something there.
+  WallFrame wall;
+  const ItemVisibilityOptions options;
+  wall.segmentation.refinement.non_ground = cv::Mat::zeros(480, 640, CV_8U);
+  EXPECT_TRUE(FrameVisibility(wall.Processed(), options).CouldSee({0, 0, 2.0}, 0.1));
+  wall.segmentation.refinement.non_ground(cv::Rect(300, 220, 40, 40)).setTo(255);
+  EXPECT_FALSE(FrameVisibility(wall.Processed(), options).CouldSee({0, 0, 2.0}, 0.1));
+  // Beside the region (u = 525 * 0.3 / 2 + 319.5 = 398): ground there, a miss.
+  EXPECT_TRUE(FrameVisibility(wall.Processed(), options).CouldSee({0.3, 0, 2.0}, 0.1));
+}
+
 TEST(ItemVisibility, RejectsADepthRangeTheMarginLeavesEmpty) {
   const WallFrame wall;
   ItemVisibilityOptions options;

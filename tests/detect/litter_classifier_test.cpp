@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <random>
 
@@ -103,6 +104,34 @@ TEST(LitterClassifier, LearnsSeparableClassesAndGeneralisesToNewSamples) {
     EXPECT_GE(right, static_cast<int>(0.9 * double(held_out.size())))
         << ClassifierMethodName(method);
   }
+}
+
+TEST(LitterClassifier, DecidesLitterWhenItIsMoreLikelyThanNot) {
+  auto samples = MakeSamples(4, 6);
+  for (int i = 0; i < 4; ++i) {  // a second litter class: "cup", relabelled cans
+    ObjectSample cup = samples[static_cast<std::size_t>(3 * i)];
+    cup.label = "cup";
+    samples.push_back(cup);
+  }
+  const auto classifier = LitterClassifier::Train(samples, SmallForest(), nullptr);
+  const auto& classes = classifier.classes();
+  const auto index = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(classes.begin(), classes.end(), name) -
+                                    classes.begin());
+  };
+  ASSERT_EQ(classes.size(), 4u);
+  const auto decide = [&](double can, double cup, double natural, double clutter) {
+    std::vector<double> p(4);
+    p[index("can")] = can, p[index("cup")] = cup, p[index("natural")] = natural;
+    p[index("clutter")] = clutter;
+    return classes[classifier.Decide(p)];
+  };
+  // Two litter classes sharing 0.55 beat a natural class of 0.45: the likelier litter class.
+  EXPECT_EQ(decide(0.30, 0.25, 0.45, 0.0), "can");
+  // 0.45 litter is less likely than not, though it beats natural (0.30) and clutter (0.25) alone.
+  EXPECT_EQ(decide(0.25, 0.20, 0.30, 0.25), "natural");
+  EXPECT_EQ(decide(0.25, 0.20, 0.20, 0.35), "clutter");
+  EXPECT_EQ(decide(0.20, 0.30, 0.25, 0.25), "cup");  // a tie counts as litter
 }
 
 TEST(LitterClassifier, SavedModelClassifiesExactlyAsTheTrainedOne) {
