@@ -8,6 +8,7 @@
 #include "cli/cli_context.hpp"
 #include "cli/option_checks.hpp"
 #include "detect/classifier_training.hpp"
+#include "detect/options_file.hpp"
 #include "detect/sample_collection.hpp"
 #include "run/detect_run.hpp"
 
@@ -18,6 +19,7 @@ struct SamplesArguments {
   std::string bag;
   std::string truth_dir;
   std::string output;
+  std::string options_file;
   detect::SampleCollectionOptions options;
 };
 
@@ -71,11 +73,22 @@ void RegisterTrainCommands(CLI::App& app, CliContext& context) {
   command->add_option("--debug-frames", samples->options.debug_frames,
                       "Write a segmentation picture of every processed frame here");
   command
+      ->add_option("--options", samples->options_file,
+                   "detect's YAML options file: its segmentation and frame keys cut the objects "
+                   "(item keys do not apply; --every overrides it)")
+      ->check(ExistingInput(InputKind::kFile));
+  command
       ->add_option("--label-radius", samples->options.label_radius_m,
                    "An object within this distance (m) of a truth object takes its class")
       ->capture_default_str()
       ->check(FiniteRange(0.01, 10));
-  command->callback([samples, &context] {
+  command->callback([samples, command, &context] {
+    if (!samples->options_file.empty()) {
+      const std::size_t every = samples->options.objects.every;
+      detect::FusionOptions unused;
+      detect::ApplyOptionsFile(samples->options_file, &samples->options.objects, &unused);
+      if (command->count("--every") > 0) samples->options.objects.every = every;
+    }
     context.run = [samples, &context] { RunSamples(*samples, context); };
   });
 

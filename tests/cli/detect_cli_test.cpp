@@ -94,6 +94,13 @@ TEST(DetectCli, EndToEndOnTheFirst45SecondsOfTheSamplePark) {
   result = RunLittermap("samples " + Quote(d / "bag") + " --truth " + Quote(d / "truth") + " -o " +
                         Quote(d / "samples") + " --every 3 --quiet");
   ASSERT_EQ(result.exit_code, 0) << result.output;
+  // Samples cut with detect's options file: the camera-rate profile's segmentation.
+  result =
+      RunLittermap("samples " + Quote(d / "bag") + " --truth " + Quote(d / "truth") + " -o " +
+                   Quote(d / "samples_fast") + " --options " + Quote(fast) + " --every 9 --quiet");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find(" samples ("), std::string::npos) << result.output;
+  EXPECT_TRUE(std::filesystem::exists(d / "samples_fast" / "labels.csv"));
   result = RunLittermap("train " + Quote(d / "samples") + " -o " + Quote(d / "model.yml.gz") +
                         " --trees 20 --validate " + Quote(d / "samples"));
   ASSERT_EQ(result.exit_code, 0) << result.output;
@@ -122,6 +129,14 @@ TEST(DetectCli, BadInputNamesTheFile) {
   result = RunLittermap("detect " + Quote(d / "bag") + " --run " + Quote(d / "run_no_traj"));
   EXPECT_EQ(result.exit_code, 2) << result.output;
   EXPECT_NE(result.output.find("trajectory.tum"), std::string::npos) << result.output;
+  // samples reads detect's options file and names a bad key.
+  std::filesystem::create_directories(d / "truth");
+  std::ofstream(d / "bad_options.yaml") << "geometry_step_px: 9\n";
+  result = RunLittermap("samples " + Quote(d / "bag") + " --truth " + Quote(d / "truth") + " -o " +
+                        Quote(d / "samples") + " --options " + Quote(d / "bad_options.yaml"));
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("bad_options.yaml"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("geometry_step_px"), std::string::npos) << result.output;
 }
 
 }  // namespace
