@@ -64,11 +64,11 @@ void SegmentAndClassify(benchmark::State& state, const std::vector<Frame>& frame
       LITTERMAP_SOURCE_DIR "/samples/models/litter_classifier.yml.gz");
   // The benchmark's arguments: the normal step (organized_cloud.hpp: 1 = every pixel), the
   // normal method (0 PCL covariance, 1 OpenCV FALS, 2 PCL average 3D gradient) and the options:
-  // 0 the defaults, 1 samples/detect_fast.yaml (the geometry on every 2nd pixel).
+  // 0 the defaults (the geometry on every 2nd pixel), 1 samples/detect_full.yaml (on every pixel).
   detect::RunObjectsOptions run_options;
   detect::FusionOptions fusion;
   if (state.range(2) == 1) {
-    detect::ApplyOptionsFile(LITTERMAP_SOURCE_DIR "/samples/detect_fast.yaml", &run_options,
+    detect::ApplyOptionsFile(LITTERMAP_SOURCE_DIR "/samples/detect_full.yaml", &run_options,
                              &fusion);
   }
   detect::SegmentationOptions options = run_options.segmentation;
@@ -123,7 +123,7 @@ void BM_ParkFrames(benchmark::State& state) {
                      T_base_optical().cast<float>());
 }
 BENCHMARK(BM_ParkFrames)
-    ->ArgNames({"normal_step", "method", "fast"})
+    ->ArgNames({"normal_step", "method", "full"})
     ->Args({1, 0, 0})
     ->Args({1, 1, 0})
     ->Args({1, 1, 1})
@@ -155,7 +155,7 @@ void BM_TumDeskFrames(benchmark::State& state) {
   SegmentAndClassify(state, frames, K, T_level_optical.cast<float>());
 }
 BENCHMARK(BM_TumDeskFrames)
-    ->ArgNames({"normal_step", "method", "fast"})
+    ->ArgNames({"normal_step", "method", "full"})
     ->Args({1, 0, 0})
     ->Args({1, 1, 0})
     ->Args({1, 1, 1})

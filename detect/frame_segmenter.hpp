@@ -26,10 +26,11 @@ struct SegmentationOptions {
   // The frame's geometry (normals, components, the ground and its texture cut) is computed on
   // every geometry_step_px-th pixel of every geometry_step_px-th row; objects are then refined
   // by GrabCut and measured at full resolution, so their outlines keep the image's detail.
-  // Pixel counts and sizes of the options are of the full image at every step. A step of 2 is
-  // the camera's rate on one core (with GrabCut boxes of box_margin 0.3, max_refine_pixels
-  // 3000), at some cost in items found: README's `detect` section has the figures.
-  int geometry_step_px = 1;
+  // Pixel counts and sizes of the options are of the full image at every step. Step 2 (with
+  // GrabCut boxes of box_margin 0.3, max_refine_pixels 3000) is the camera's rate on one core and
+  // finds as many items as step 1 (README's `detect` section has the figures);
+  // samples/detect_full.yaml is step 1, on which the shipped model was trained.
+  int geometry_step_px = 2;
   void Validate() const;
 };
 

@@ -25,13 +25,13 @@ struct ObjectClusterOptions {
   double min_size_m = 0.03;  // largest horizontal extent
   double max_size_m = 0.40;
   double max_height_m = 0.35;  // highest point above the ground surface
-  double box_margin = 0.6;     // GrabCut box: the blob's box grown by this share on each side
+  double box_margin = 0.3;     // GrabCut box: the blob's box grown by this share on each side
   int min_box_margin_px = 6;
   bool refine = true;  // GrabCut per cluster
   // GrabCut's cost grows with the pixels of its box: a larger box is refined at a reduced scale
   // that brings it to this many pixels (its colour models need no more), and the mask brought
   // back to full resolution keeps geometry's certain pixels as they were.
-  int max_refine_pixels = 6000;
+  int max_refine_pixels = 3000;
   // Ground within this many pixels of a blob is left to GrabCut rather than fixed as
   // background: normals shared by a block of normal_step_px pixels blur the boundary.
   int uncertain_fringe_px = 2;

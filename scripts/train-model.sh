@@ -25,10 +25,11 @@ cut_samples() {
   if [[ -f "$run/samples/labels.csv" ]]; then return 0; fi
   echo "== seed $seed: simulating and cutting samples"
   "$littermap" simulate "$world" -o "$run/bag" --truth "$run/truth" --seed "$seed" --quiet
-  "$littermap" samples "$run/bag" --truth "$run/truth" -o "$run/samples" --every 3 --quiet
+  "$littermap" samples "$run/bag" --truth "$run/truth" -o "$run/samples" --every 3 \
+    --options "$here/samples/detect_full.yaml" --quiet
 }
 export -f cut_samples
-export littermap work world
+export littermap work world here
 printf '%s\n' "${seeds[@]}" | xargs -P "$jobs" -I{} bash -c 'cut_samples {}'
 
 sample_dirs=()

@@ -70,9 +70,9 @@ TEST(DetectCli, EndToEndOnTheFirst45SecondsOfTheSamplePark) {
   ExpectTheLitterFound(d / "run" / "items.csv", d / "truth");
 
   // Segmentation IoU on the instance masks: objects with 100+ depth pixels are mostly cut out,
-  // by the defaults and by the camera-rate profile (the geometry at half resolution).
-  const auto fast = std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "detect_fast.yaml";
-  for (const std::string& options : {std::string(), " --options " + Quote(fast)}) {
+  // by the defaults (the geometry at half resolution) and by the full-resolution profile.
+  const auto full = std::filesystem::path(LITTERMAP_SOURCE_DIR) / "samples" / "detect_full.yaml";
+  for (const std::string& options : {std::string(), " --options " + Quote(full)}) {
     result = RunLittermap("eval segmentation " + Quote(d / "bag") + " " + Quote(d / "truth") +
                           options + " --json --quiet");
     ASSERT_EQ(result.exit_code, 0) << result.output;
@@ -82,25 +82,26 @@ TEST(DetectCli, EndToEndOnTheFirst45SecondsOfTheSamplePark) {
     EXPECT_GE(iou["all"]["mean_iou"].get<double>(), 0.5) << options << ": " << result.output;
   }
 
-  // The camera-rate profile finds the same items within the same tolerances.
+  // The full-resolution profile finds the same items within the same tolerances.
   result =
       RunLittermap("detect " + Quote(d / "bag") + " --run " + Quote(d / "run") + " -o " +
-                   Quote(d / "fast") + " --trajectory " + Quote(d / "truth" / "trajectory.tum") +
-                   " --options " + Quote(fast) + " --every 2 --quiet");
+                   Quote(d / "full") + " --trajectory " + Quote(d / "truth" / "trajectory.tum") +
+                   " --options " + Quote(full) + " --every 2 --quiet");
   ASSERT_EQ(result.exit_code, 0) << result.output;
-  ExpectTheLitterFound(d / "fast" / "items.csv", d / "truth");
+  ExpectTheLitterFound(d / "full" / "items.csv", d / "truth");
 
   // samples + train make a model detect can use.
   result = RunLittermap("samples " + Quote(d / "bag") + " --truth " + Quote(d / "truth") + " -o " +
                         Quote(d / "samples") + " --every 3 --quiet");
   ASSERT_EQ(result.exit_code, 0) << result.output;
-  // Samples cut with detect's options file: the camera-rate profile's segmentation.
+  // Samples cut with detect's options file: the full-resolution segmentation, as the shipped
+  // model's were.
   result =
       RunLittermap("samples " + Quote(d / "bag") + " --truth " + Quote(d / "truth") + " -o " +
-                   Quote(d / "samples_fast") + " --options " + Quote(fast) + " --every 9 --quiet");
+                   Quote(d / "samples_full") + " --options " + Quote(full) + " --every 9 --quiet");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_NE(result.output.find(" samples ("), std::string::npos) << result.output;
-  EXPECT_TRUE(std::filesystem::exists(d / "samples_fast" / "labels.csv"));
+  EXPECT_TRUE(std::filesystem::exists(d / "samples_full" / "labels.csv"));
   result = RunLittermap("train " + Quote(d / "samples") + " -o " + Quote(d / "model.yml.gz") +
                         " --trees 20 --validate " + Quote(d / "samples"));
   ASSERT_EQ(result.exit_code, 0) << result.output;

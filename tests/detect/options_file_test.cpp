@@ -74,16 +74,18 @@ TEST(DetectOptionsFile, BadKeysAndValuesNameTheFileAndKey) {
   test::ExpectBadInput(apply(window), "fals_window_px must be 1, 3, 5 or 7");
 }
 
-// The shipped profile for the camera's rate reads, and differs from the defaults where it says.
-TEST(DetectOptionsFile, TheFastProfileSetsTheGeometryStepAndTheGrabCutBoxes) {
+// The shipped full-resolution profile reads, and differs from the defaults where it says.
+TEST(DetectOptionsFile, TheFullResolutionProfileSetsTheGeometryStepAndTheGrabCutBoxes) {
   RunObjectsOptions objects;
   FusionOptions fusion;
-  ApplyOptionsFile(LITTERMAP_SOURCE_DIR "/samples/detect_fast.yaml", &objects, &fusion);
+  ApplyOptionsFile(LITTERMAP_SOURCE_DIR "/samples/detect_full.yaml", &objects, &fusion);
   const SegmentationOptions& s = objects.segmentation;
-  EXPECT_EQ(SegmentationOptions{}.geometry_step_px, 1);
-  EXPECT_EQ(s.geometry_step_px, 2);
-  EXPECT_EQ(s.objects.box_margin, 0.3);
-  EXPECT_EQ(s.objects.max_refine_pixels, 3000);
+  EXPECT_EQ(SegmentationOptions{}.geometry_step_px, 2);
+  EXPECT_EQ(SegmentationOptions{}.objects.box_margin, 0.3);
+  EXPECT_EQ(SegmentationOptions{}.objects.max_refine_pixels, 3000);
+  EXPECT_EQ(s.geometry_step_px, 1);
+  EXPECT_EQ(s.objects.box_margin, 0.6);
+  EXPECT_EQ(s.objects.max_refine_pixels, 6000);
   EXPECT_EQ(s.cloud.fals_window_px, OrganizedCloudOptions{}.fals_window_px);
 }
 
