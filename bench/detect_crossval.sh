@@ -6,9 +6,9 @@
 # steadier yardstick for detection and fusion rules.
 #   bench/detect_crossval.sh LITTERMAP_BINARY WORK_DIR [SEED...]   (default 11-18 and 41-56)
 #   OPTIONS=samples/detect_full.yaml bench/detect_crossval.sh ...    (detect's options file)
-# WORK_DIR has scripts/train-model.sh's layout (WORK/seedN/{bag,truth,samples}) and either's
-# simulations and samples are reused; samples are cut as train-model.sh cuts them. Models and
-# detections are made again on every call. Prints one row per seed and the totals.
+# The fold models are made by scripts/train-model.sh in WORK_DIR, so a folder of it is reused
+# (simulations and samples); models and detections are made again on every call. Prints one row
+# per seed and the totals.
 set -euo pipefail
 littermap=$1
 work=$2
@@ -22,31 +22,16 @@ if [[ ${#seeds[@]} -lt 2 ]]; then
   exit 1
 fi
 here=$(cd "$(dirname "$0")/.." && pwd)
-world="$here/samples/worlds/park_small.yaml"
 jobs=${JOBS:-$(nproc)}
 mkdir -p "$work"
 
-cut_samples() {
-  local seed=$1 run="$work/seed$1"
-  if [[ ! -f "$run/truth/masks/visible.csv" ]]; then
-    "$littermap" simulate "$world" -o "$run/bag" --truth "$run/truth" --seed "$seed" --quiet \
-      >/dev/null
-  fi
-  if [[ ! -f "$run/samples/labels.csv" ]]; then
-    "$littermap" samples "$run/bag" --truth "$run/truth" -o "$run/samples" --every 3 \
-      --options "$here/samples/detect_full.yaml" --quiet >/dev/null
-  fi
-}
-export -f cut_samples
-export littermap work world here
-printf '%s\n' "${seeds[@]}" | xargs -P "$jobs" -I{} bash -c 'cut_samples {}'
-
+# Each fold's model, made as the shipped one is (simulations and samples are cut when missing).
 half=$((${#seeds[@]} / 2))
 folds=("${seeds[*]:0:half}" "${seeds[*]:half}")
 for f in 0 1; do
-  dirs=()
-  for seed in ${folds[$f]}; do dirs+=("$work/seed$seed/samples"); done
-  "$littermap" train "${dirs[@]}" -o "$work/crossval_model_$f.yml.gz" --quiet >/dev/null
+  # shellcheck disable=SC2086  # a fold is a list of seeds
+  JOBS=$jobs "$here/scripts/train-model.sh" "$littermap" "$work" "$work/crossval_model_$f.yml.gz" \
+    ${folds[$f]} >/dev/null
 done
 
 detect() {
@@ -61,6 +46,7 @@ detect() {
     >"$run/crossval/eval.json"
 }
 export -f detect
+export littermap work
 export OPTIONS=${OPTIONS:-}
 # shellcheck disable=SC2016  # the inner shell expands $0 and $1
 {
