@@ -12,6 +12,10 @@ void FusionOptions::Validate() const {
   if (!(min_seen_share >= 0 && min_seen_share <= 1)) {
     throw UsageError("detect: min_seen_share must be in [0, 1]");
   }
+  if (class_views < 0) throw UsageError("detect: class_views must be >= 0");
+  if (!(min_litter_probability > 0 && min_litter_probability <= 1)) {
+    throw UsageError("detect: min_litter_probability must be in (0, 1]");
+  }
 }
 
 ItemFusion::ItemFusion(FusionOptions options, std::size_t classes)
@@ -19,7 +23,22 @@ ItemFusion::ItemFusion(FusionOptions options, std::size_t classes)
   options_.Validate();
 }
 
-std::size_t ItemFusion::Add(const Sighting& sighting) {
+void ItemFusion::KeepIfAmongTheLargest(Track& track, const Sighting& sighting) const {
+  auto& kept = track.class_views;
+  if (options_.class_views == 0 || kept.size() < static_cast<std::size_t>(options_.class_views)) {
+    kept.emplace_back(sighting.pixels, sighting.class_probabilities);
+    return;
+  }
+  // Replace the smallest (the first of equals) when this sighting is larger.
+  const auto smallest = std::min_element(
+      kept.begin(), kept.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  if (sighting.pixels > smallest->first) {
+    smallest->first = sighting.pixels;
+    smallest->second = sighting.class_probabilities;
+  }
+}
+
+int ItemFusion::Add(const Sighting& sighting) {
   if (sighting.class_probabilities.size() != classes_) {
     throw InternalError("detect: sighting has " +
                         std::to_string(sighting.class_probabilities.size()) +
@@ -37,7 +56,6 @@ std::size_t ItemFusion::Add(const Sighting& sighting) {
   }
   if (best == tracks_.size()) {
     Track track;
-    track.probability_sum.assign(classes_, 0.0);
     track.first_seen_ns = sighting.stamp_ns;
     tracks_.push_back(std::move(track));
   }
@@ -48,13 +66,12 @@ std::size_t ItemFusion::Add(const Sighting& sighting) {
   track.weighted_sum += weight * sighting.position_world_m;
   track.weight += weight;
   track.size_sum += sighting.size_m;
-  for (std::size_t k = 0; k < classes_; ++k)
-    track.probability_sum[k] += sighting.class_probabilities[k];
+  KeepIfAmongTheLargest(track, sighting);
   ++track.views;
   track.last_frame = sighting.frame;
   track.first_seen_ns = std::min(track.first_seen_ns, sighting.stamp_ns);
   track.last_seen_ns = std::max(track.last_seen_ns, sighting.stamp_ns);
-  return best;
+  return static_cast<int>(best) + 1;
 }
 
 void ItemFusion::Observe(std::size_t frame,
@@ -78,18 +95,22 @@ std::size_t ItemFusion::seldom_seen() const {
 
 std::vector<LitterItem> ItemFusion::Items() const {
   std::vector<LitterItem> items;
-  for (const Track& track : tracks_) {
+  for (std::size_t i = 0; i < tracks_.size(); ++i) {
+    const Track& track = tracks_[i];
     if (track.views < options_.min_views || SeldomSeen(track)) continue;
     LitterItem item;
-    item.id = static_cast<int>(items.size()) + 1;
+    item.id = static_cast<int>(i) + 1;
     item.position_world_m = track.mean();
     item.size_m = track.size_sum / track.views;
     item.views = track.views;
     item.missed_views = track.missed_views;
     item.first_seen_ns = track.first_seen_ns;
     item.last_seen_ns = track.last_seen_ns;
-    item.class_probabilities = track.probability_sum;
-    for (double& p : item.class_probabilities) p /= track.views;
+    item.class_probabilities.assign(classes_, 0.0);
+    for (const auto& [pixels, probabilities] : track.class_views) {
+      for (std::size_t k = 0; k < classes_; ++k) item.class_probabilities[k] += probabilities[k];
+    }
+    for (double& p : item.class_probabilities) p /= static_cast<double>(track.class_views.size());
     item.best_class = static_cast<std::size_t>(
         std::max_element(item.class_probabilities.begin(), item.class_probabilities.end()) -
         item.class_probabilities.begin());

@@ -249,13 +249,14 @@ Classification LitterClassifier::Classify(const ObjectSample& object) const {
   return out;
 }
 
-std::size_t LitterClassifier::Decide(const std::vector<double>& probabilities) const {
+std::size_t LitterClassifier::Decide(const std::vector<double>& probabilities,
+                                     double min_litter_probability) const {
   // Litter or not first: the litter classes together against the rest together, so an object
   // is litter when that is more likely than not. Then the most likely class of that kind.
   const std::size_t n = probabilities.size();
   double litter = 0, other = 0;
   for (std::size_t k = 0; k < n; ++k) (model_->litter[k] ? litter : other) += probabilities[k];
-  const bool choose_litter = litter >= other;
+  const bool choose_litter = litter >= min_litter_probability * (litter + other);
   std::size_t best = n;
   for (std::size_t k = 0; k < n; ++k) {
     if ((model_->litter[k] != 0) != choose_litter) continue;

@@ -58,8 +58,10 @@ class LitterClassifier {
   // likely as the other classes together, then the likeliest class of that kind. Seven litter
   // classes sharing one object's votes must not lose to one natural class, and an object more
   // likely not litter than litter is not litter, however the rest split between natural and
-  // clutter.
-  std::size_t Decide(const std::vector<double>& probabilities) const;
+  // clutter. An item fused from many views may ask for more: litter when the litter classes
+  // together have at least `min_litter_probability` of the whole.
+  std::size_t Decide(const std::vector<double>& probabilities,
+                     double min_litter_probability = 0.5) const;
   // The class one method alone picks (kCombined: Classify's best).
   std::size_t Predict(const ObjectSample& object, ClassifierMethod method) const;
 

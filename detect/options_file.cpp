@@ -143,6 +143,9 @@ const OptionSetters<O>& Setters() {
        Set<double>([](O& o) -> double& { return o.fusion.association_radius_m; })},
       {"min_views", Set<int>([](O& o) -> int& { return o.fusion.min_views; })},
       {"min_seen_share", Set<double>([](O& o) -> double& { return o.fusion.min_seen_share; })},
+      {"class_views", Set<int>([](O& o) -> int& { return o.fusion.class_views; })},
+      {"min_litter_probability",
+       Set<double>([](O& o) -> double& { return o.fusion.min_litter_probability; })},
   };
   return setters;
 }

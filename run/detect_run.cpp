@@ -42,8 +42,9 @@ DetectRunResult DetectRun(const std::filesystem::path& bag, const std::filesyste
         if (c.best != clutter) {
           detect::Sighting sighting{placed.frame->index,     placed.frame->stamp_ns,
                                     placed.position_world_m, placed.object->size_m,
-                                    placed.object->range_m,  c.probabilities};
-          item = static_cast<long>(fusion.Add(sighting));
+                                    placed.object->range_m,  placed.object->pixels,
+                                    c.probabilities};
+          item = fusion.Add(sighting);
         }
         detections.Write(placed, classifier.classes()[c.best], c, item);
       },
@@ -55,7 +56,13 @@ DetectRunResult DetectRun(const std::filesystem::path& bag, const std::filesyste
         if (on_frame) on_frame(processed);
       });
   detections.Close();
-  const ItemsWritten items = WriteItemsCsv(output.items(), fusion.Items(), classifier);
+  std::vector<detect::LitterItem> fused = fusion.Items();
+  for (detect::LitterItem& item : fused) {
+    item.best_class =
+        classifier.Decide(item.class_probabilities, options.fusion.min_litter_probability);
+    item.confidence = item.class_probabilities[item.best_class];
+  }
+  const ItemsWritten items = WriteItemsCsv(output.items(), fused, classifier);
   result.litter_items = items.litter;
   result.natural_objects = items.natural;
   result.seldom_seen = fusion.seldom_seen();

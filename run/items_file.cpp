@@ -19,9 +19,7 @@ ItemsWritten WriteItemsCsv(const std::filesystem::path& file,
          "first_seen_ns,last_seen_ns\n";
   const std::size_t clutter = classifier.ClassIndex("clutter");
   ItemsWritten written;
-  for (detect::LitterItem item : items) {
-    item.best_class = classifier.Decide(item.class_probabilities);
-    item.confidence = item.class_probabilities[item.best_class];
+  for (const detect::LitterItem& item : items) {
     if (item.best_class == clutter) continue;
     const bool litter = classifier.is_litter(item.best_class);
     (litter ? written.litter : written.natural) += 1;

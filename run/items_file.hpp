@@ -24,7 +24,8 @@ struct ItemsWritten {
   std::size_t natural = 0;
 };
 
-// Throws UsageError if the file cannot be created, InternalError if writing fails.
+// Writes the items as decided (best_class; clutter is left out). Throws UsageError if the file
+// cannot be created, InternalError if writing fails.
 ItemsWritten WriteItemsCsv(const std::filesystem::path& file,
                            const std::vector<detect::LitterItem>& items,
                            const detect::LitterClassifier& classifier);

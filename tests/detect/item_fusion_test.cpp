@@ -50,6 +50,19 @@ TEST(ItemFusion, ItemsSeenInTooFewViewsAreDropped) {
   EXPECT_EQ(fusion.candidates(), 2u);
 }
 
+// detections.csv names each sighting's item by the id Add returns, so an item must keep that id in
+// items.csv when candidates seen before it were dropped.
+TEST(ItemFusion, AnItemKeepsTheIdItsSightingsWereGiven) {
+  ItemFusion fusion({0.25, 3}, 1);
+  EXPECT_EQ(fusion.Add(At(5, 5, {1.0})), 1);  // seen once: dropped
+  int id = 0;
+  for (int i = 0; i < 3; ++i) id = fusion.Add(At(0.01 * i, 0, {1.0}));
+  EXPECT_EQ(id, 2);
+  const std::vector<LitterItem> items = fusion.Items();
+  ASSERT_EQ(items.size(), 1u);
+  EXPECT_EQ(items[0].id, 2);
+}
+
 TEST(ItemFusion, NearSightingsCountMoreThanFarOnes) {
   ItemFusion fusion({0.5, 1}, 1);
   fusion.Add(At(0.0, 0, {1.0}, 0, 1.0));  // weight 1
@@ -104,9 +117,42 @@ TEST(ItemFusion, ItemsSeenInTooSmallAShareOfTheirChancesAreDropped) {
   EXPECT_THROW(ItemFusion({0.25, 1, 1.5}, 1), UsageError);
 }
 
+// A bottle seen twelve times at the far edge of the range, a dozen pixels that the classifier
+// thinks natural, then four times close by as a bottle: its class is what the close views say.
+TEST(ItemFusion, TheClassComesFromTheLargestViews) {
+  const auto fuse = [](int class_views) {
+    FusionOptions options;
+    options.class_views = class_views;
+    ItemFusion fusion(options, 2);
+    for (int i = 0; i < 16; ++i) {
+      const bool close = i >= 12;
+      Sighting s = At(1, 0, close ? std::vector<double>{0.9, 0.1} : std::vector<double>{0.3, 0.7});
+      s.pixels = close ? 400 + i : 12;
+      fusion.Add(s);
+    }
+    return fusion.Items();
+  };
+  const std::vector<LitterItem> largest = fuse(4);
+  ASSERT_EQ(largest.size(), 1u);
+  EXPECT_NEAR(largest[0].class_probabilities[0], 0.9, 1e-9);
+  EXPECT_EQ(largest[0].views, 16);
+  const std::vector<LitterItem> six = fuse(6);  // the four close views and two far ones
+  EXPECT_NEAR(six[0].class_probabilities[0], (4 * 0.9 + 2 * 0.3) / 6, 1e-9);
+  const std::vector<LitterItem> all = fuse(0);
+  EXPECT_NEAR(all[0].class_probabilities[0], (4 * 0.9 + 12 * 0.3) / 16, 1e-9);
+}
+
 TEST(ItemFusion, RejectsBadOptionsAndProbabilityCounts) {
   EXPECT_THROW(ItemFusion({0.0, 3}, 2), UsageError);
   EXPECT_THROW(ItemFusion({0.2, 0}, 2), UsageError);
+  FusionOptions views;
+  views.class_views = -1;
+  EXPECT_THROW(ItemFusion(views, 2), UsageError);
+  for (const double p : {0.0, 1.5}) {
+    FusionOptions litter;
+    litter.min_litter_probability = p;
+    EXPECT_THROW(ItemFusion(litter, 2), UsageError) << p;
+  }
   ItemFusion fusion({0.25, 1}, 2);
   EXPECT_THROW(fusion.Add(At(0, 0, {1.0})), InternalError);
 }

@@ -120,11 +120,12 @@ TEST(LitterClassifier, DecidesLitterWhenItIsMoreLikelyThanNot) {
                                     classes.begin());
   };
   ASSERT_EQ(classes.size(), 4u);
-  const auto decide = [&](double can, double cup, double natural, double clutter) {
+  const auto decide = [&](double can, double cup, double natural, double clutter,
+                          double min_litter_probability = 0.5) {
     std::vector<double> p(4);
     p[index("can")] = can, p[index("cup")] = cup, p[index("natural")] = natural;
     p[index("clutter")] = clutter;
-    return classes[classifier.Decide(p)];
+    return classes[classifier.Decide(p, min_litter_probability)];
   };
   // Two litter classes sharing 0.55 beat a natural class of 0.45: the likelier litter class.
   EXPECT_EQ(decide(0.30, 0.25, 0.45, 0.0), "can");
@@ -132,6 +133,9 @@ TEST(LitterClassifier, DecidesLitterWhenItIsMoreLikelyThanNot) {
   EXPECT_EQ(decide(0.25, 0.20, 0.30, 0.25), "natural");
   EXPECT_EQ(decide(0.25, 0.20, 0.20, 0.35), "clutter");
   EXPECT_EQ(decide(0.20, 0.30, 0.25, 0.25), "cup");  // a tie counts as litter
+  // An item may ask for more than even odds: 0.55 litter is not enough for 0.6.
+  EXPECT_EQ(decide(0.30, 0.25, 0.45, 0.0, 0.6), "natural");
+  EXPECT_EQ(decide(0.35, 0.25, 0.40, 0.0, 0.6), "can");
 }
 
 TEST(LitterClassifier, SavedModelClassifiesExactlyAsTheTrainedOne) {

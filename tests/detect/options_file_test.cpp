@@ -33,6 +33,8 @@ TEST(DetectOptionsFile, SetsTheNamedOptions) {
                          "max_size_m: 0.5\n"
                          "every: 2\n"
                          "min_views: 4\n"
+                         "class_views: 5\n"
+                         "min_litter_probability: 0.6\n"
                          "association_radius_m: 0.3\n"),
                    &objects, &fusion);
   const SegmentationOptions& s = objects.segmentation;
@@ -45,6 +47,8 @@ TEST(DetectOptionsFile, SetsTheNamedOptions) {
   EXPECT_EQ(s.objects.max_size_m, 0.5);
   EXPECT_EQ(objects.every, 2u);
   EXPECT_EQ(fusion.min_views, 4);
+  EXPECT_EQ(fusion.class_views, 5);
+  EXPECT_EQ(fusion.min_litter_probability, 0.6);
   EXPECT_EQ(fusion.association_radius_m, 0.3);
   // Untouched keys keep their defaults.
   EXPECT_EQ(s.components.max_gap_m, ComponentOptions{}.max_gap_m);
@@ -70,6 +74,9 @@ TEST(DetectOptionsFile, BadKeysAndValuesNameTheFileAndKey) {
   test::ExpectBadInput(apply(step), "normal_step_px must be from 1 to 8");
   const auto geometry = Write(dir, "geometry_step_px: 5\n");
   test::ExpectBadInput(apply(geometry), "geometry_step_px must be from 1 to 4");
+  const auto litter = Write(dir, "min_litter_probability: 0\n");
+  test::ExpectBadInput(apply(litter),
+                       litter.string() + ": detect: min_litter_probability must be in (0, 1]");
   const auto window = Write(dir, "fals_window_px: 4\n");
   test::ExpectBadInput(apply(window), "fals_window_px must be 1, 3, 5 or 7");
 }
