@@ -16,7 +16,7 @@ work=$2
 shift 2
 seeds=("$@")
 if [[ ${#seeds[@]} -eq 0 ]]; then
-  seeds=(11 12 13 14 15 16 17 18 $(seq 41 80))
+  seeds=(11 12 13 14 15 16 17 18 {41..80})
 fi
 if [[ ${#seeds[@]} -lt 2 ]]; then
   echo "detect_crossval.sh: needs at least two seeds, one for each fold" >&2

@@ -3,7 +3,8 @@
 # (scripts/train-model.sh uses 11-18 and 41-56): simulate, detect with the true trajectory
 # (detection alone) and with the reconstructed one (the pipeline), and score items against the
 # truth.
-#   bench/detect_eval.sh LITTERMAP_BINARY WORK_DIR [SEED...]  (default seeds 7 21-23 101-103 201-203)
+#   bench/detect_eval.sh LITTERMAP_BINARY WORK_DIR [SEED...]
+#     (default seeds 7 21-23 101-103 201-203)
 #   WORLD=samples/worlds/park_hard.yaml bench/detect_eval.sh ... 36   (another world; 36 is its own)
 #   MIN_CONFIDENCE=0.25 bench/detect_eval.sh ...   (scores only the items at least that sure)
 #   MODEL=other.yml.gz bench/detect_eval.sh ...      (another classifier than the shipped one)

@@ -251,7 +251,7 @@ Classification LitterClassifier::Classify(const ObjectSample& object) const {
 
 std::size_t LitterClassifier::Decide(const std::vector<double>& probabilities,
                                      double min_litter_probability) const {
-  // Litter or not first: the litter classes together against the rest together, so an object
+  // Litter or not first: the litter classes together against the whole, so by default an object
   // is litter when that is more likely than not. Then the most likely class of that kind.
   const std::size_t n = probabilities.size();
   double litter = 0, other = 0;

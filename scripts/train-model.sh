@@ -4,8 +4,9 @@
 # crops labelled from their ground truth, and `littermap train` on all of them.
 #   scripts/train-model.sh LITTERMAP_BINARY WORK_DIR MODEL_OUT [SEED...]
 # Seeds default to 11-18 and 41-56; 7 (the demo's world), 21-23, 101-103 and 201-203 are kept
-# for testing, 57-80 for cross-validation (bench/detect_crossval.sh). About 3 minutes per seed on one core; JOBS (default: the number of cores) seeds are
-# simulated at once. Every seed's crops are the same whichever runs first, so the model is too.
+# for testing, 57-80 for cross-validation (bench/detect_crossval.sh). About 3 minutes per seed on
+# one core; JOBS (default: the number of cores) seeds are simulated at once. Every seed's crops
+# are the same whichever runs first, so the model is too.
 set -euo pipefail
 littermap=$1
 work=$2
