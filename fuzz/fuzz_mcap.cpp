@@ -3,18 +3,16 @@
 // is skipped); anything else (a crash, a sanitizer report, another exception, an out-of-memory,
 // a hang) is a bug.
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <string>
 
 #include "bag/bag_reader.hpp"
 #include "bag/mcap_records.hpp"
 #include "core/error.hpp"
+#include "fuzz/scratch_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   // Other inputs would open as sqlite3 storage: fuzz the MCAP reader only.
@@ -22,8 +20,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size < mcap::kMagic.size() || !std::equal(mcap::kMagic.begin(), mcap::kMagic.end(), data)) {
     return 0;
   }
-  static const std::filesystem::path file =
-      std::filesystem::temp_directory_path() / ("fuzz_mcap_" + std::to_string(getpid()) + ".mcap");
+  static const littermap::fuzz::ScratchFile scratch("fuzz_mcap", ".mcap");
+  const std::filesystem::path& file = scratch.path();
   std::ofstream(file, std::ios::binary | std::ios::trunc)
       .write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   try {

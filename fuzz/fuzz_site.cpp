@@ -3,24 +3,19 @@
 // littermap site, damaged) or environment; a crash, a sanitizer report, another exception or
 // an internal error is a bug.
 
-#include <unistd.h>
-
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <string>
 
 #include "core/error.hpp"
 #include "db/site_database.hpp"
+#include "fuzz/scratch_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::filesystem::path file = std::filesystem::temp_directory_path() /
-                                     ("fuzz_site_" + std::to_string(::getpid()) + ".gpkg");
-  std::filesystem::remove(file);
-  for (const char* suffix : {"-wal", "-shm", "-journal"}) {
-    std::filesystem::remove(file.string() + suffix);
-  }
+  static const littermap::fuzz::ScratchFile scratch("fuzz_site", ".gpkg");
+  const std::filesystem::path& file = scratch.path();
+  scratch.Remove();  // the last input's database must not be read as this one's
   if (std::FILE* out = std::fopen(file.c_str(), "wb")) {
     std::fwrite(data, 1, size, out);
     std::fclose(out);

@@ -18,7 +18,8 @@ run() {
   seeds="$here/fuzz/corpus/${name#fuzz_}"
   [[ -d "$seeds" ]] && cp -r "$seeds"/. "$corpus"/
   # libFuzzer exits non-zero on a crash, which fails this target and so the run.
-  if "$fuzzer" -max_total_time="$seconds" -print_final_stats=1 "$corpus" >"$work/$name.log" 2>&1; then
+  # A target's scratch files go in the work folder too, whatever becomes of the fuzzer.
+  if TMPDIR="$work" "$fuzzer" -max_total_time="$seconds" -print_final_stats=1 "$corpus" >"$work/$name.log" 2>&1; then
     echo "== $name for ${seconds}s: clean"
     tail -n 8 "$work/$name.log"
   else
