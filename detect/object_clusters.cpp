@@ -162,8 +162,6 @@ bool Measure(const OrganizedCloud& cloud, const GroundSurface& surface, const cv
   object->ground_level_m = {mean.x(), mean.y(),
                             static_cast<float>(surface.HeightAt(mean.x(), mean.y()))};
   object->range_m = range / static_cast<float>(points.size());
-  object->touches_border = object->box.x == 0 || object->box.y == 0 ||
-                           object->box.br().x == cloud.width || object->box.br().y == cloud.height;
   return true;
 }
 

@@ -49,7 +49,6 @@ struct SegmentedObject {
   float width_m = 0;                                           // horizontal extent across it
   float height_m = 0;  // highest point above the ground surface
   float range_m = 0;   // mean depth
-  bool touches_border = false;
 };
 
 struct ObjectClusterResult {
