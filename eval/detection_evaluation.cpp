@@ -83,6 +83,14 @@ std::string ToText(const DetectionMetrics& metrics, const DetectionMetricsOption
   AppendFormat(text, "false negatives    %zu\n", metrics.false_negatives);
   AppendFormat(text, "precision          %.3f\n", metrics.precision);
   AppendFormat(text, "recall             %.3f\n", metrics.recall);
+  if (!metrics.recall_by_masks.empty()) {
+    text += "  by masks seen in ";
+    for (const RecallByMasks& bucket : metrics.recall_by_masks) {
+      AppendFormat(text, "  %s: %zu/%zu %.3f", bucket.masks.c_str(), bucket.true_positives,
+                   bucket.truth, bucket.recall);
+    }
+    text += '\n';
+  }
   AppendFormat(text, "F1                 %.3f\n", metrics.f1);
   AppendFormat(text, "class accuracy     %.3f over %zu true positives\n", metrics.class_accuracy,
                metrics.true_positives);

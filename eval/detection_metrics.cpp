@@ -87,10 +87,36 @@ std::vector<ClassMetrics> CountPerClass(const std::vector<const DetectedItem*>& 
   return classes;
 }
 
+// The masks an object has at least min_pixels in.
+std::size_t MasksSeen(const VisiblePixels& visible, const std::string& id, std::size_t min_pixels) {
+  const auto it = visible.find(id);
+  if (it == visible.end()) return 0;
+  return static_cast<std::size_t>(
+      std::count_if(it->second.begin(), it->second.end(),
+                    [&](std::size_t pixels) { return pixels >= min_pixels; }));
+}
+
+std::vector<RecallByMasks> CountRecallByMasks(const std::vector<const TruthObject*>& truth,
+                                              const std::vector<bool>& found,
+                                              const VisiblePixels& visible,
+                                              std::size_t min_pixels) {
+  std::vector<RecallByMasks> buckets = {{"1"}, {"2"}, {"3+"}};
+  for (std::size_t j = 0; j < truth.size(); ++j) {
+    // Visible truth was seen in at least one mask.
+    const std::size_t masks = MasksSeen(visible, truth[j]->id, min_pixels);
+    RecallByMasks& bucket = buckets[std::clamp<std::size_t>(masks, 1, 3) - 1];
+    ++bucket.truth;
+    bucket.true_positives += found[j];
+  }
+  for (RecallByMasks& bucket : buckets) bucket.recall = Ratio(bucket.true_positives, bucket.truth);
+  return buckets;
+}
+
 // Litter scores: predicted litter against visible truth litter.
 void ScoreLitter(const std::vector<DetectedItem>& detected,
                  const std::vector<const TruthObject*>& shown,
                  const std::vector<const TruthObject*>& hidden, double radius_m,
+                 const std::optional<VisiblePixels>& visible, std::size_t min_pixels,
                  DetectionMetrics& metrics) {
   std::vector<const DetectedItem*> predicted;
   for (const DetectedItem& item : detected) {
@@ -107,10 +133,12 @@ void ScoreLitter(const std::vector<DetectedItem>& detected,
   const auto [false_positives, ignored] =
       SplitUnmatched(predicted, matched, hidden_litter, radius_m);
   std::vector<const DetectedItem*> scored;
+  std::vector<bool> found(truth.size(), false);
   std::size_t class_correct = 0;
   for (std::size_t i = 0; i < predicted.size(); ++i) {
     if (matched[i] == kUnmatched) continue;
     scored.push_back(predicted[i]);
+    found[matched[i]] = true;
     class_correct += predicted[i]->class_name == truth[matched[i]]->class_name;
   }
   metrics.true_positives = scored.size();
@@ -126,6 +154,7 @@ void ScoreLitter(const std::vector<DetectedItem>& detected,
   metrics.f1 = sum > 0 ? 2 * metrics.precision * metrics.recall / sum : 0.0;
   metrics.class_accuracy = Ratio(class_correct, metrics.true_positives);
   metrics.per_class = CountPerClass(scored, truth, predicted, matched);
+  if (visible) metrics.recall_by_masks = CountRecallByMasks(truth, found, *visible, min_pixels);
 }
 
 // Confusion and litter/natural accuracy: every detected item against every visible object.
@@ -224,12 +253,9 @@ DetectionMetrics EvaluateDetections(const std::vector<DetectedItem>& detected,
   options.Validate();
   std::vector<const TruthObject*> shown, hidden;
   for (const TruthObject& object : truth) {
-    std::size_t pixels = options.min_visible_pixels;
-    if (visible_pixels) {
-      const auto it = visible_pixels->find(object.id);
-      pixels = it == visible_pixels->end() ? 0 : it->second;
-    }
-    (pixels >= options.min_visible_pixels ? shown : hidden).push_back(&object);
+    const bool seen =
+        !visible_pixels || MasksSeen(*visible_pixels, object.id, options.min_visible_pixels) > 0;
+    (seen ? shown : hidden).push_back(&object);
   }
   DetectionMetrics metrics;
   metrics.hidden_truth = hidden.size();
@@ -239,7 +265,8 @@ DetectionMetrics EvaluateDetections(const std::vector<DetectedItem>& detected,
     if (item.confidence >= options.min_confidence) sure.push_back(item);
   }
   metrics.below_confidence = detected.size() - sure.size();
-  ScoreLitter(sure, shown, hidden, options.match_radius_m, metrics);
+  ScoreLitter(sure, shown, hidden, options.match_radius_m, visible_pixels,
+              options.min_visible_pixels, metrics);
   Confuse(sure, shown, hidden, options.match_radius_m, metrics);
   return metrics;
 }
@@ -267,8 +294,7 @@ VisiblePixels ReadVisiblePixels(const std::filesystem::path& file) {
   ReadCsv(file, {"object_id", "pixels"}, [&](const CsvRow& row) {
     // Pixels with a depth reading when the file says (an RGB-D detector can place only those).
     const std::size_t pixels = Count(row, row.Has("depth_pixels") ? "depth_pixels" : "pixels");
-    std::size_t& largest = visible[row.NonEmptyText("object_id")];
-    largest = std::max(largest, pixels);
+    visible[row.NonEmptyText("object_id")].push_back(pixels);
   });
   return visible;
 }
@@ -296,6 +322,13 @@ std::string ToJson(const DetectionMetrics& metrics, const DetectionMetricsOption
                                        {"tp", c.true_positives},
                                        {"precision", c.precision},
                                        {"recall", c.recall}};
+  }
+  if (!metrics.recall_by_masks.empty()) {
+    json["recall_by_masks"] = nlohmann::ordered_json::object();
+    for (const RecallByMasks& bucket : metrics.recall_by_masks) {
+      json["recall_by_masks"][bucket.masks] = {
+          {"truth", bucket.truth}, {"tp", bucket.true_positives}, {"recall", bucket.recall}};
+    }
   }
   json["confusion"] = nlohmann::ordered_json::object();
   const auto& labels = metrics.confusion_labels;

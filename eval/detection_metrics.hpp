@@ -54,8 +54,8 @@ struct TruthObject {
   bool litter = true;  // false for natural look-alikes
 };
 
-// Largest pixel count of each object over all masked frames, by object id.
-using VisiblePixels = std::unordered_map<std::string, std::size_t>;
+// The pixel counts of each object in the masked frames it appears in, by object id.
+using VisiblePixels = std::unordered_map<std::string, std::vector<std::size_t>>;
 
 struct DetectionMetricsOptions {
   double match_radius_m = 0.3;
@@ -71,6 +71,16 @@ struct ClassMetrics {
   std::size_t true_positives = 0;  // matches whose truth and predicted class are this class
   double precision = 1.0;          // true_positives / detected
   double recall = 1.0;             // true_positives / truth
+};
+
+// Recall over the visible truth litter seen in `masks` masked frames (with at least
+// min_visible_pixels): an item in one mask was in view for about one mask interval, a glimpse at
+// the edge of the image or of the depth range, one in many was passed by.
+struct RecallByMasks {
+  std::string masks;  // "1", "2", "3+"
+  std::size_t truth = 0;
+  std::size_t true_positives = 0;
+  double recall = 1.0;
 };
 
 struct DetectionMetrics {
@@ -89,7 +99,8 @@ struct DetectionMetrics {
   double class_accuracy = 1.0;           // true positives whose predicted class is the truth class
   double litter_natural_accuracy = 1.0;  // all-items pairs whose litter flags agree
   std::size_t litter_natural_pairs = 0;
-  std::vector<ClassMetrics> per_class;  // LitterClasses(), then any other litter class seen
+  std::vector<ClassMetrics> per_class;         // LitterClasses(), then any other litter class seen
+  std::vector<RecallByMasks> recall_by_masks;  // with visible pixels: 1, 2, 3+ masks
   // confusion[t][p]: matches of truth label t to predicted label p (all-items matching).
   std::vector<std::string> confusion_labels;  // per_class's classes, "natural", "none"
   std::vector<std::vector<std::size_t>> confusion;
@@ -102,8 +113,8 @@ struct DetectionMetrics {
 std::vector<std::pair<std::size_t, std::size_t>> MatchByDistance(
     const std::vector<Eigen::Vector2d>& a, const std::vector<Eigen::Vector2d>& b, double radius_m);
 
-// visible_pixels: when given, truth objects with fewer than options.min_visible_pixels (absent
-// objects have 0) are not truth. Throws UsageError for invalid options.
+// visible_pixels: when given, truth objects with fewer than options.min_visible_pixels in every
+// mask (absent objects have none) are not truth. Throws UsageError for invalid options.
 DetectionMetrics EvaluateDetections(const std::vector<DetectedItem>& detected,
                                     const std::vector<TruthObject>& truth,
                                     const DetectionMetricsOptions& options,
@@ -124,8 +135,8 @@ std::vector<DetectedItem> TransformItems(std::vector<DetectedItem> items,
 std::vector<TruthObject> ReadTruthObjects(const std::filesystem::path& file, bool litter);
 // A simulator TRUTH_DIR's litter.csv and natural.csv together.
 std::vector<TruthObject> ReadTruthDirectory(const std::filesystem::path& truth_dir);
-// masks/visible.csv (object_id, pixels required): the largest pixel count of each object, of
-// its pixels with a depth reading when the file has a depth_pixels column.
+// masks/visible.csv (object_id, pixels required): the pixel counts of each object, of its pixels
+// with a depth reading when the file has a depth_pixels column.
 VisiblePixels ReadVisiblePixels(const std::filesystem::path& file);
 
 }  // namespace littermap::eval

@@ -208,7 +208,7 @@ TEST(DetectionMetrics, ItemsLessSureThanTheThresholdAreLeftOut) {
 TEST(DetectionMetrics, VisibilityFilterDropsObjectsTheCameraBarelySaw) {
   const std::vector<TruthObject> truth = {Litter("1", "can", 0, 0), Litter("2", "can", 5, 0),
                                           Litter("3", "cup", 10, 0), Natural("4", "leaf", 15, 0)};
-  const VisiblePixels visible = {{"1", 500}, {"2", 20}, {"4", 10}};  // 3 never in a mask
+  const VisiblePixels visible = {{"1", {500}}, {"2", {20}}, {"4", {10}}};  // 3 never in a mask
   const std::vector<DetectedItem> detected = {Item("can", 0, 0), Item("can", 5, 0),
                                               Item("cup", 15, 0)};  // the hidden leaf as litter
   const DetectionMetrics unfiltered = EvaluateDetections(detected, truth, {});
@@ -241,6 +241,44 @@ TEST(DetectionMetrics, VisibilityFilterDropsObjectsTheCameraBarelySaw) {
   EXPECT_EQ(at_twenty.truth_litter, 2u);
   EXPECT_EQ(at_twenty.true_positives, 2u);
   EXPECT_EQ(at_twenty.ignored_detections, 0u);
+}
+
+TEST(DetectionMetrics, RecallIsSplitByTheMasksAnItemWasSeenIn) {
+  // Six visible litter items: two glimpsed in one mask, one seen in two, three in more.
+  const std::vector<TruthObject> truth = {Litter("1", "can", 0, 0),  Litter("2", "can", 5, 0),
+                                          Litter("3", "cup", 10, 0), Litter("4", "cup", 15, 0),
+                                          Litter("5", "can", 20, 0), Litter("6", "can", 25, 0)};
+  const VisiblePixels visible = {{"1", {150, 40}},       {"2", {30, 120}},
+                                 {"3", {100, 400, 90}},  {"4", {900, 800, 700}},
+                                 {"5", {150, 300, 400}}, {"6", {120, 130, 140, 150}}};
+  // Found: one glimpse, the two-mask item, two of three seen often.
+  const std::vector<DetectedItem> detected = {Item("can", 0, 0), Item("cup", 10, 0),
+                                              Item("cup", 15, 0), Item("can", 20, 0)};
+  const DetectionMetrics metrics = EvaluateDetections(detected, truth, {}, visible);
+  ASSERT_EQ(metrics.recall_by_masks.size(), 3u);
+  const auto expect = [&](std::size_t k, const char* masks, std::size_t truth_count,
+                          std::size_t found) {
+    EXPECT_EQ(metrics.recall_by_masks[k].masks, masks);
+    EXPECT_EQ(metrics.recall_by_masks[k].truth, truth_count) << masks;
+    EXPECT_EQ(metrics.recall_by_masks[k].true_positives, found) << masks;
+    EXPECT_NEAR(metrics.recall_by_masks[k].recall, double(found) / double(truth_count), kTolerance)
+        << masks;
+  };
+  expect(0, "1", 2, 1);
+  expect(1, "2", 1, 1);
+  expect(2, "3+", 3, 2);
+  // Masks under the threshold do not count: at 200 pixels items 1, 2 and 6 are hidden, item 3
+  // was seen in one mask and item 5 in two.
+  DetectionMetricsOptions options;
+  options.min_visible_pixels = 200;
+  const DetectionMetrics strict = EvaluateDetections(detected, truth, options, visible);
+  EXPECT_EQ(strict.truth_litter, 3u);
+  for (const RecallByMasks& bucket : strict.recall_by_masks) {
+    EXPECT_EQ(bucket.truth, 1u) << bucket.masks;
+    EXPECT_EQ(bucket.true_positives, 1u) << bucket.masks;
+  }
+  // Without visibility there is no split.
+  EXPECT_TRUE(EvaluateDetections(detected, truth, {}).recall_by_masks.empty());
 }
 
 TEST(DetectionMetrics, EmptySetsGiveVacuousRatios) {
@@ -285,8 +323,8 @@ TEST(DetectionMetricsFiles, ReadersFindColumnsByName) {
 
   WriteFile(dir / "visible.csv", "frame,object_id,pixels\n0,7,40\n1,7,300\n2,7,12\n2,9,5\n");
   const VisiblePixels visible = ReadVisiblePixels(dir / "visible.csv");
-  EXPECT_EQ(visible.at("7"), 300u);
-  EXPECT_EQ(visible.at("9"), 5u);
+  EXPECT_EQ(visible.at("7"), (std::vector<std::size_t>{40, 300, 12}));
+  EXPECT_EQ(visible.at("9"), (std::vector<std::size_t>{5}));
 }
 
 TEST(DetectionMetricsFiles, ErrorsNameFileLineAndColumn) {

@@ -80,7 +80,7 @@ TEST(EvaluationFiles, TruthFilesReadInOrder) {
   EXPECT_EQ(all.objects[2].id, "3");
   EXPECT_FALSE(all.objects[2].litter);
   ASSERT_TRUE(all.visible_pixels.has_value());
-  EXPECT_EQ(all.visible_pixels->at("1"), 500u);
+  EXPECT_EQ(all.visible_pixels->at("1"), std::vector<std::size_t>{500});
   const DetectionTruth litter_only = ReadDetectionTruth(dir / "litter.csv", {}, {});
   EXPECT_EQ(litter_only.objects.size(), 2u);
   EXPECT_FALSE(litter_only.visible_pixels.has_value());
@@ -124,12 +124,17 @@ TEST(EvaluationFiles, TextReportOfDetections) {
       << text;
   EXPECT_NE(text.back(), '\n');
 
-  truth.visible_pixels = VisiblePixels{{"1", 500}, {"3", 500}};  // the cup is hidden
+  truth.visible_pixels = VisiblePixels{{"1", {500}}, {"3", {500}}};  // the cup is hidden
   const DetectionMetrics visible = EvaluateDetections(items, truth, {});
   EXPECT_TRUE(visible.visibility_filtered);
   EXPECT_NE(ToText(visible, {})
                 .find("hidden objects     1 (under 100 pixels in every mask: not truth)\n"),
             std::string::npos);
+  EXPECT_NE(ToText(visible, {})
+                .find("\nrecall             1.000\n"
+                      "  by masks seen in   1: 1/1 1.000  2: 0/0 1.000  3+: 0/0 1.000\n"),
+            std::string::npos)
+      << ToText(visible, {});
 }
 
 }  // namespace
