@@ -59,7 +59,7 @@ for seed in "${seeds[@]}"; do
 import json, sys
 seed, source, path, ate = sys.argv[1:5]
 m = json.load(open(path))
-by_masks = "/".join("%d/%d" % (b["tp"], b["truth"]) for b in m["recall_by_masks"].values())
+by_masks = " ".join("%d/%d" % (b["tp"], b["truth"]) for b in m["recall_by_masks"].values())
 print("%-5s %-10s %8.3f %9.3f %6.3f %6.3f %8.3f %10.3f %14d %6d %6d  %s" % (
     seed, source, float(ate), m["precision"], m["recall"], m["f1"], m["class_accuracy"],
     m["litter_natural_accuracy"], m["truth_litter"], m["true_positives"], m["false_positives"],
