@@ -54,8 +54,8 @@ TEST(EvalDetectionsCli, JsonHasStableKeysAndRightFigures) {
   for (const char* key :
        {"precision", "recall", "f1", "true_positives", "false_positives", "false_negatives",
         "class_accuracy", "litter_natural_accuracy", "litter_natural_pairs", "truth_litter",
-        "detected_litter", "below_confidence", "per_class", "confusion", "match_radius_m",
-        "min_confidence"}) {
+        "detected_litter", "below_confidence", "per_class", "recall_by_masks", "confusion",
+        "match_radius_m", "min_confidence"}) {
     EXPECT_TRUE(json.contains(key)) << key;
   }
   // Bottle 3 (12 pixels) is left out. Litter: a and b match cans 1 and 2; c and e are false.
@@ -79,6 +79,12 @@ TEST(EvalDetectionsCli, JsonHasStableKeysAndRightFigures) {
   EXPECT_NEAR(can.at("precision").get<double>(), 1.0, 1e-12);
   EXPECT_NEAR(can.at("recall").get<double>(), 0.5, 1e-12);
   EXPECT_EQ(json.at("per_class").size(), 7u);  // the seven litter classes
+  // Both cans were seen in one mask with 100 pixels or more (can 2's other has 90).
+  const auto& by_masks = json.at("recall_by_masks");
+  EXPECT_EQ(by_masks.at("1").at("truth"), 2);
+  EXPECT_EQ(by_masks.at("1").at("tp"), 2);
+  EXPECT_EQ(by_masks.at("2").at("truth"), 0);
+  EXPECT_EQ(by_masks.at("3+").at("truth"), 0);
   const auto& confusion = json.at("confusion");
   EXPECT_EQ(confusion.at("can").at("can"), 1);
   EXPECT_EQ(confusion.at("can").at("cup"), 1);
@@ -93,7 +99,13 @@ TEST(EvalDetectionsCli, MinPixelsRadiusAndConfidenceChangeTheAnswer) {
   WriteScene(dir);
   const auto all = RunLittermap(Arguments(dir) + " --min-pixels 10 --json");
   ASSERT_EQ(all.exit_code, 0) << all.output;
-  EXPECT_EQ(nlohmann::json::parse(all.output).at("false_negatives"), 1);  // bottle 3 counts
+  const auto all_json = nlohmann::json::parse(all.output);
+  EXPECT_EQ(all_json.at("false_negatives"), 1);  // bottle 3 counts
+  // At 10 pixels can 2 was seen in two masks, and the missed bottle in one.
+  EXPECT_EQ(all_json.at("recall_by_masks").at("1").at("truth"), 2);
+  EXPECT_EQ(all_json.at("recall_by_masks").at("1").at("tp"), 1);
+  EXPECT_EQ(all_json.at("recall_by_masks").at("2").at("truth"), 1);
+  EXPECT_EQ(all_json.at("recall_by_masks").at("2").at("tp"), 1);
   const auto tight = RunLittermap(Arguments(dir) + " --match-radius 0.15 --json");
   ASSERT_EQ(tight.exit_code, 0) << tight.output;
   EXPECT_EQ(nlohmann::json::parse(tight.output).at("true_positives"), 1);  // b is 0.2 m off
