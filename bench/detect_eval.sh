@@ -79,12 +79,14 @@ for source, path in zip(sys.argv[1::2], sys.argv[2::2]):
     for masks, b in m["recall_by_masks"].items():
         t["tp " + masks] += b["tp"]
         t["truth " + masks] += b["truth"]
+def ratio(numerator, denominator):  # over nothing, 1: as eval detections counts it
+    return numerator / denominator if denominator else 1.0
 print()
 for source, t in totals.items():
     tp, fp, fn = t["true_positives"], t["false_positives"], t["false_negatives"]
     by_masks = "  ".join("%s: %d/%d %.3f" % (k, t["tp " + k], t["truth " + k],
-                                             t["tp " + k] / max(t["truth " + k], 1))
+                                             ratio(t["tp " + k], t["truth " + k]))
                          for k in ("1", "2", "3+"))
     print("all seeds, %s: precision %.3f recall %.3f (tp %d fp %d fn %d); recall by masks %s" % (
-        source, tp / max(tp + fp, 1), tp / max(tp + fn, 1), tp, fp, fn, by_masks))
+        source, ratio(tp, tp + fp), ratio(tp, tp + fn), tp, fp, fn, by_masks))
 PY

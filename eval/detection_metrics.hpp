@@ -85,7 +85,7 @@ struct RecallByMasks {
 
 struct DetectionMetrics {
   std::size_t truth_litter = 0;     // visible truth litter
-  std::size_t detected_litter = 0;  // items predicted litter (= TP + FP + ignored)
+  std::size_t detected_litter = 0;  // items predicted litter and scored (= TP + FP)
   std::size_t true_positives = 0;
   std::size_t false_positives = 0;
   std::size_t false_negatives = 0;
