@@ -50,8 +50,10 @@ void SlamOptions::Validate() const {
   if (!(map_max_range_m > 0) || map_max_range_m > 300) {
     throw UsageError("slam: map_max_range_m must be in (0, 300]");
   }
-  if (!(edge_sigma_floor_m > 0) || !(edge_sigma_floor_rad > 0) || !(odometry_sigma_m > 0) ||
-      !(odometry_sigma_rad > 0) || !(refine_hold_sigma_m > 0) || !(refine_hold_sigma_rad > 0)) {
+  if (!(edge_sigma_floor_m > 0) || !(edge_sigma_floor_rad > 0) ||
+      !(gyro_edge_sigma_floor_rad > 0) || !(soft_edge_sigma_floor_rad > 0) ||
+      !(odometry_sigma_m > 0) || !(odometry_sigma_rad > 0) || !(refine_hold_sigma_m > 0) ||
+      !(refine_hold_sigma_rad > 0)) {
     throw UsageError("slam: edge sigma floors, odometry and refinement hold sigmas must be > 0");
   }
   if (!(max_loop_residual_m > 0) || !(max_loop_residual_rad > 0)) {
@@ -149,6 +151,8 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdomet
   scans_.push_back(record);
   scans_without_gyro_.push_back((scans_without_gyro_.empty() ? 0 : scans_without_gyro_.back()) +
                                 (T_odom_base && input.heading_from_gyro ? 0 : 1));
+  scans_by_camera_.push_back((scans_by_camera_.empty() ? 0 : scans_by_camera_.back()) +
+                             (step.routine == Routine::kRgbd ? 1 : 0));
   StoreMapPoints(still_base ? *still_base : echoes_base);
   if (step.new_key_frame) {
     if (step.key_frame > 0) AddGraphEdge(input, step);
@@ -200,8 +204,15 @@ void SlamPipeline::AddGraphEdge(const TrackInput& input, const TrackStep& step) 
                               PredictionOf(step.odometry_used, input.heading_from_gyro));
     edge.odometry_sigma_rad = 1 / std::sqrt(model(2, 2));
   } else {
+    const std::size_t a = frames[edge.from].scan_index, b = frames[edge.to].scan_index;
+    const bool through_camera = scans_by_camera_[b] != scans_by_camera_[a];
+    const bool gyro_turned =
+        scans_[a].T_odom_base && scans_without_gyro_[b] == scans_without_gyro_[a];
+    const double floor_rad = through_camera ? options_.soft_edge_sigma_floor_rad
+                             : gyro_turned  ? options_.gyro_edge_sigma_floor_rad
+                                            : options_.edge_sigma_floor_rad;
     edge.information = EdgeInformation(step.information, frames[edge.from].T_world_base.theta_rad,
-                                       options_.edge_sigma_floor_m, options_.edge_sigma_floor_rad);
+                                       options_.edge_sigma_floor_m, floor_rad);
   }
   edges_.push_back(edge);
 }

@@ -45,9 +45,20 @@ struct SlamOptions {
   PoseGraphOptions graph;
   OccupancyGridOptions grid;
   double map_max_range_m = 30.0;  // echoes drawn into the occupancy grid; at most 300 m
-  // Covariance floor of every matched edge (EdgeInformation).
+  // Covariance floor of every matched edge (EdgeInformation). A match's own information counts
+  // every echo as independent; without a gyro the edge's heading rests on the match alone, and a
+  // laser matcher settles a little off at every key frame (edge_sigma_floor_rad). Where the gyro
+  // turned every scan of the edge and the camera placed none, the tracker has fused a floored
+  // match with the gyro's heading, whose drift its model states: only a small floor is added
+  // (gyro_edge_sigma_floor_rad). An edge over scans the camera placed (the laser lost the map: a
+  // tilt, an open lawn) took its path through poses the step's information does not speak for:
+  // soft_edge_sigma_floor_rad, so that a loop's correction goes there rather than to the
+  // stretches the laser held. (Scans placed by odometry alone are in the step's information: the
+  // tracker fuses the key frame's match with the odometry since the last key frame.)
   double edge_sigma_floor_m = 0.02;
   double edge_sigma_floor_rad = 0.01;
+  double gyro_edge_sigma_floor_rad = 0.002;
+  double soft_edge_sigma_floor_rad = 0.02;
   double odometry_sigma_m = 0.1;  // graph edge of an odometry-only key frame
   double odometry_sigma_rad = 0.05;
   bool loop_closure = true;
@@ -256,6 +267,8 @@ class SlamPipeline {
   // Scans so far whose odometry the gyro did not turn (or without odometry), after each scan: a
   // stretch of scans was gyro-turned all along where it does not grow.
   std::vector<std::size_t> scans_without_gyro_;
+  // Scans so far that the camera placed (routine rgbd), likewise.
+  std::vector<std::size_t> scans_by_camera_;
   std::optional<double> first_odometry_z_m_;
   bool tilted_ = false;          // some scan came with the base's tilt
   double max_scan_range_m_ = 0;  // the scanner's, as its scans state it

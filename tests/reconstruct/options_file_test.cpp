@@ -45,7 +45,9 @@ TEST(OptionsFile, SetsTheNamedOptions) {
                          "alignment_point_sigma_m: 0.02\n"
                          "rgbd_loops: false\n"
                          "tilted_min_matching_ratio: 0.9\n"
-                         "max_level_tilt_rad: 0.2\n"),
+                         "max_level_tilt_rad: 0.2\n"
+                         "gyro_edge_sigma_floor_rad: 0.003\n"
+                         "soft_edge_sigma_floor_rad: 0.04\n"),
                    &options);
   EXPECT_EQ(options.slam.tracker.min_matching_ratio, 0.5);
   EXPECT_FALSE(options.rgbd);
@@ -62,6 +64,8 @@ TEST(OptionsFile, SetsTheNamedOptions) {
   EXPECT_FALSE(options.rgbd_tracker.loops);
   EXPECT_EQ(options.slam.tracker.tilted_min_matching_ratio, 0.9);
   EXPECT_EQ(options.slam.tracker.max_level_tilt_rad, 0.2);
+  EXPECT_EQ(options.slam.gyro_edge_sigma_floor_rad, 0.003);
+  EXPECT_EQ(options.slam.soft_edge_sigma_floor_rad, 0.04);
 }
 
 TEST(OptionsFile, AnEmptyFileKeepsTheDefaults) {
@@ -97,6 +101,9 @@ TEST(OptionsFile, OutOfRangeValuesFailValidation) {
   ReconstructionOptions options;
   const std::filesystem::path file = Write(dir, "rgbd_min_confidence: 2\n");
   test::ExpectBadInput([&] { ApplyOptionsFile(file, &options); }, file.string() + ": ");
+  const std::filesystem::path floor = Write(dir, "soft_edge_sigma_floor_rad: 0\n");
+  test::ExpectBadInput([&] { ApplyOptionsFile(floor, &options); },
+                       "edge sigma floors, odometry and refinement hold sigmas must be > 0");
   const std::filesystem::path nan = Write(dir, "max_correction_m: .nan\n");
   test::ExpectBadInput([&] { ApplyOptionsFile(nan, &options); },
                        nan.string() + ": option 'max_correction_m' must be a finite number");

@@ -329,6 +329,83 @@ TEST(SlamPipeline, LandmarkSightingsJoinTheGraphAtAnyLoopOutdoorsWithALongRangeS
   EXPECT_EQ(LandmarkSightingsInTheGraph(true, 5.6), 0u);
 }
 
+// A 30 m x 10 m loop between rows of posts (24-gons, 0.15 m radius) that a 4 m scanner sees only
+// along the two long sides; the short sides and the turns at the corners are blind (no echoes),
+// and in each turn the "gyro" turns 0.01 rad too far. Driven once around and on past the start,
+// where a loop closes. Returns the largest heading error of the key frames along the first long
+// side, which the laser and the gyro held.
+double HeldSideHeadingError(const SlamOptions& options) {
+  std::vector<test::Segment> walls;
+  for (double x = 0; x <= 30; x += 2) {
+    for (const double y : {-1.5, 1.5, 8.5, 11.5}) {
+      for (int i = 0; i < 24; ++i) {
+        const auto corner = [&](int k) {
+          const double a = 2 * std::numbers::pi * k / 24;
+          return Eigen::Vector2d(Eigen::Vector2d(x + (y > 5 ? 1 : 0), y) +
+                                 0.15 * Eigen::Vector2d(std::cos(a), std::sin(a)));
+        };
+        walls.push_back({corner(i), corner(i + 1)});
+      }
+    }
+  }
+  SlamPipeline pipeline(options, {});
+  const std::vector<Eigen::Vector2d> corners = {{0, 0}, {30, 0}, {30, 10}, {0, 10}};
+  PlanarPose truth{0, 0, 0};
+  PlanarPose odometry = truth;
+  TimestampNs stamp_ns = 0;
+  std::vector<std::pair<TimestampNs, double>> held;  // stamps and true headings on side one
+  const auto scan_and_move = [&](const PlanarPose& step, double odometry_error_rad, bool blind) {
+    truth = Compose(truth, step);
+    odometry = Compose(odometry, {step.x_m, step.y_m, step.theta_rad + odometry_error_rad});
+    LaserScan scan = test::ScanFrom(walls, truth, 720);
+    scan.stamp_ns = stamp_ns += 200'000'000;
+    scan.range_max_m = 4;
+    for (float& r : scan.ranges_m) {
+      if (blind || r > 4) r = std::numeric_limits<float>::infinity();
+    }
+    pipeline.AddScan(scan, GyroOdometryPose{odometry, true, 0}, Tilt{0, 0});
+    return scan.stamp_ns;
+  };
+  for (int leg = 0; leg < 5; ++leg) {
+    const Eigen::Vector2d to = corners[(leg + 1) % corners.size()];
+    const bool blind = leg % 2 == 1;
+    // Turned on the spot at 0.8 rad/s, blind.
+    const double turn =
+        WrapAngle(std::atan2(to.y() - truth.y_m, to.x() - truth.x_m) - truth.theta_rad);
+    for (int i = 0; i < 10 && leg > 0; ++i) scan_and_move({0, 0, turn / 10}, 0.001, true);
+    const double length = leg == 4 ? 6 : std::hypot(to.x() - truth.x_m, to.y() - truth.y_m);
+    for (double done = 0; done < length - 1e-9; done += 0.2) {
+      const TimestampNs stamp = scan_and_move({std::min(0.2, length - done), 0, 0}, 0, blind);
+      if (leg == 0) held.emplace_back(stamp, truth.theta_rad);
+    }
+  }
+  pipeline.Finish();
+  EXPECT_GT(pipeline.quality().loops_accepted, 0u);
+  double worst = 0;
+  for (const auto& [stamp, key_frame] : pipeline.KeyFramePoses()) {
+    for (const auto& [held_stamp, heading] : held) {
+      if (held_stamp == stamp) {
+        worst = std::max(worst, std::abs(WrapAngle(key_frame.theta_rad - heading)));
+      }
+    }
+  }
+  return worst;
+}
+
+// A loop's correction belongs where the heading was lost: in the blind turns, not along the sides
+// the laser and the gyro held together. With the held edges' heading floor as soft as the blind
+// odometry's, the loop bends the held side too.
+TEST(SlamPipeline, ALoopCorrectsWhereTheLaserDidNotHoldTheHeading) {
+  SlamOptions options;
+  options.landmarks = false;
+  options.alignment_mode = AlignmentMode::kOff;
+  const double held = HeldSideHeadingError(options);
+  options.gyro_edge_sigma_floor_rad = options.odometry_sigma_rad;
+  const double soft = HeldSideHeadingError(options);
+  EXPECT_LT(held, 0.004);
+  EXPECT_GT(soft, 2 * held);
+}
+
 TEST(SlamPipeline, MapRangeBeyondWhatItStoresIsAUsageError) {
   SlamOptions options;
   options.map_max_range_m = 301;
