@@ -204,13 +204,12 @@ void SlamPipeline::AddGraphEdge(const TrackInput& input, const TrackStep& step) 
                               PredictionOf(step.odometry_used, input.heading_from_gyro));
     edge.odometry_sigma_rad = 1 / std::sqrt(model(2, 2));
   } else {
-    const std::size_t a = frames[edge.from].scan_index, b = frames[edge.to].scan_index;
-    const bool through_camera = scans_by_camera_[b] != scans_by_camera_[a];
-    const bool gyro_turned =
-        scans_[a].T_odom_base && scans_without_gyro_[b] == scans_without_gyro_[a];
+    const bool through_camera = scans_by_camera_[frames[edge.to].scan_index] !=
+                                scans_by_camera_[frames[edge.from].scan_index];
     const double floor_rad = through_camera ? options_.soft_edge_sigma_floor_rad
-                             : gyro_turned  ? options_.gyro_edge_sigma_floor_rad
-                                            : options_.edge_sigma_floor_rad;
+                             : GyroTurnedBetween(edge.from, edge.to)
+                                 ? options_.gyro_edge_sigma_floor_rad
+                                 : options_.edge_sigma_floor_rad;
     edge.information = EdgeInformation(step.information, frames[edge.from].T_world_base.theta_rad,
                                        options_.edge_sigma_floor_m, floor_rad);
   }
@@ -373,15 +372,19 @@ void SlamPipeline::HoldToGyro(LoopAttempt* attempt) const {
   }
 }
 
-bool SlamPipeline::GyroAgreesWithLoop(std::size_t from, std::size_t to, double heading_rad) const {
+bool SlamPipeline::GyroTurnedBetween(std::size_t from, std::size_t to) const {
   const auto& frames = map_.key_frames();
   const ScanRecord& a = scans_[frames[from].scan_index];
   const ScanRecord& b = scans_[frames[to].scan_index];
-  // The gyro turned every odometry step after a's scan up to b's.
-  if (!a.T_odom_base || !b.T_odom_base ||
-      scans_without_gyro_[b.scan_index] != scans_without_gyro_[a.scan_index]) {
-    return true;
-  }
+  return a.T_odom_base && b.T_odom_base &&
+         scans_without_gyro_[b.scan_index] == scans_without_gyro_[a.scan_index];
+}
+
+bool SlamPipeline::GyroAgreesWithLoop(std::size_t from, std::size_t to, double heading_rad) const {
+  if (!GyroTurnedBetween(from, to)) return true;
+  const auto& frames = map_.key_frames();
+  const ScanRecord& a = scans_[frames[from].scan_index];
+  const ScanRecord& b = scans_[frames[to].scan_index];
   const double gyro_rad = b.T_odom_base->theta_rad - a.T_odom_base->theta_rad;
   return std::abs(WrapAngle(heading_rad - gyro_rad)) <=
          options_.loops.MaxGyroDisagreementRad(ToSeconds(b.stamp_ns - a.stamp_ns));

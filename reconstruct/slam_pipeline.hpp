@@ -194,6 +194,8 @@ class SlamPipeline {
   bool ConfirmTentativeLoop(std::size_t key_frame);
   // Adds an accepted loop edge to the graph (not yet optimised).
   void AddLoopEdge(const LoopAttempt& attempt);
+  // The gyro turned every odometry step after key frame from's scan up to key frame to's.
+  bool GyroTurnedBetween(std::size_t from, std::size_t to) const;
   // False where a gyro turned the odometry all the way from `from` to `to` (key frames) and the
   // loop's heading between them disagrees with the gyro's turn
   // (LoopCloserOptions::MaxGyroDisagreementRad); true where there is no such gyro to ask.
