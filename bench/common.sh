@@ -18,3 +18,29 @@ cells_ratio() {
   python3 -c 'import json,sys; t=json.load(open(sys.argv[1]))["trajectories"]
 print("%.3f" % (t[0]["occupied_cells"] / t[1]["occupied_cells"]))' "$1"
 }
+
+# simulate_park_run LITTERMAP WORK_DIR RUN: simulates a park run once (cached in WORK_DIR/RUN, with
+# any / in RUN as -) and prints that folder, which holds bag/ and truth/. RUN is a world of
+# samples/worlds as shipped, WORLD:SEED for another draw of its run (`simulate --run-seed`),
+# WORLD@SEED for another park from the same file (`simulate --seed`), WORLD/ROUTE for another of
+# its routes (`simulate --route`), or a combination (park_large/perimeter:2, park_tilts@101:2).
+simulate_park_run() {
+  local littermap=$1 work=$2 run_name=$3
+  local here world flags=() run_dir
+  here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+  world=${run_name%%:*}
+  if [[ $run_name == *:* ]]; then flags=(--run-seed "${run_name#*:}"); fi
+  if [[ $world == *@* ]]; then
+    flags+=(--seed "${world#*@}")
+    world=${world%%@*}
+  fi
+  if [[ $world == */* ]]; then flags+=(--route "${world#*/}"); fi
+  run_dir=$work/${run_name//\//-}
+  if [[ ! -f $run_dir/truth/trajectory.tum ]]; then
+    rm -rf "$run_dir"
+    mkdir -p "$run_dir"
+    "$littermap" -q simulate "$here/samples/worlds/${world%%/*}.yaml" -o "$run_dir/bag" \
+      --truth "$run_dir/truth" "${flags[@]}" >/dev/null
+  fi
+  printf '%s\n' "$run_dir"
+}

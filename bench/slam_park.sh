@@ -54,24 +54,11 @@ printf '%-22s %-7s %7s %8s %8s %8s %8s %8s %8s %6s %6s %7s %12s\n' run mode scan
 rows=$work/rows.tsv
 : >"$rows"
 for run_name in "${run_names[@]}"; do
-  world=${run_name%%:*}
-  seed_flags=()
-  if [[ $run_name == *:* ]]; then seed_flags=(--run-seed "${run_name#*:}"); fi
-  if [[ $world == *@* ]]; then
-    seed_flags+=(--seed "${world#*@}")
-    world=${world%%@*}
-  fi
   # WORLD or WORLD/ROUTE: the spread below is over its draws and parks.
-  if [[ $world == */* ]]; then seed_flags+=(--route "${world#*/}"); fi
-  run_dir=$work/${run_name//\//-}
+  world=${run_name%%[:@]*}
+  run_dir=$(simulate_park_run "$littermap" "$work" "$run_name")
   bag=$run_dir/bag
   truth=$run_dir/truth
-  if [[ ! -f $truth/trajectory.tum ]]; then
-    rm -rf "$run_dir"
-    mkdir -p "$run_dir"
-    "$littermap" -q simulate "$here/samples/worlds/${world%%/*}.yaml" -o "$bag" --truth "$truth" \
-      "${seed_flags[@]}" >/dev/null
-  fi
   for mode in hybrid laser; do
     run=$run_dir/run-$mode
     flags=()
