@@ -19,6 +19,18 @@ cells_ratio() {
 print("%.3f" % (t[0]["occupied_cells"] / t[1]["occupied_cells"]))' "$1"
 }
 
+# park_bench_arguments [LITTERMAP] [WORK_DIR] [RUN...]: the park benchmarks' arguments, as the
+# globals littermap (default: this checkout's build), work (default: a folder in TMPDIR shared by
+# them, where the simulations are cached) and run_names (empty when none are given).
+park_bench_arguments() {
+  local here
+  here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+  littermap=${1:-$here/build/cli/littermap}
+  work=${2:-${TMPDIR:-/tmp}/littermap-slam-park}
+  shift $(($# > 2 ? 2 : $#))
+  run_names=("$@")
+}
+
 # simulate_park_run LITTERMAP WORK_DIR RUN: simulates a park run once (cached in WORK_DIR/RUN, with
 # any / in RUN as -) and prints that folder, which holds bag/ and truth/. RUN is a world of
 # samples/worlds as shipped, WORLD:SEED for another draw of its run (`simulate --run-seed`),

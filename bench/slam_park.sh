@@ -25,16 +25,13 @@
 set -euo pipefail
 
 here=$(cd "$(dirname "$0")/.." && pwd)
-littermap=${1:-$here/build/cli/littermap}
-work=${2:-${TMPDIR:-/tmp}/littermap-slam-park}
-shift $(( $# > 2 ? 2 : $# ))
-run_names=("$@")
+# shellcheck source=bench/common.sh
+source "$here/bench/common.sh"
+park_bench_arguments "$@"
 if [[ ${#run_names[@]} -eq 0 ]]; then
   run_names=(park_small park_small:1 park_small:2 park_small:3 park_large)
 fi
 mkdir -p "$work"
-# shellcheck source=bench/common.sh
-source "$here/bench/common.sh"
 
 # run_measured OUT_JSON COMMAND...: runs the command, writes its wall time and peak RSS.
 run_measured() {

@@ -14,10 +14,9 @@
 set -euo pipefail
 
 here=$(cd "$(dirname "$0")/.." && pwd)
-littermap=${1:-$here/build/cli/littermap}
-work=${2:-${TMPDIR:-/tmp}/littermap-slam-park}
-shift $(( $# > 2 ? 2 : $# ))
-run_names=("$@")
+# shellcheck source=bench/common.sh
+source "$here/bench/common.sh"
+park_bench_arguments "$@"
 if [[ ${#run_names[@]} -eq 0 ]]; then
   run_names=(park_small park_{small,tilts}:{1,2,3} park_{small,tilts}@{101,102,103})
 fi
@@ -31,8 +30,6 @@ perturbations=(
   "key_frame_translation_m: 0.501"
 )
 mkdir -p "$work"
-# shellcheck source=bench/common.sh
-source "$here/bench/common.sh"
 
 jobs=$work/spread_jobs.txt
 : >"$jobs"
