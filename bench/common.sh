@@ -1,8 +1,11 @@
 # shellcheck shell=bash
+# shellcheck disable=SC2034  # the globals set here are used by the scripts that source this file
 # Shared by the benchmark scripts (sourced, not run).
 
+# The checkout these scripts belong to.
+bench_checkout=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+
 # The command prefix that pins a run to one core, when taskset is there.
-# shellcheck disable=SC2034  # used by the scripts that source this file
 pin=()
 if command -v taskset >/dev/null; then pin=(taskset -c 0); fi
 
@@ -23,9 +26,7 @@ print("%.3f" % (t[0]["occupied_cells"] / t[1]["occupied_cells"]))' "$1"
 # globals littermap (default: this checkout's build), work (default: a folder in TMPDIR shared by
 # them, where the simulations are cached) and run_names (empty when none are given).
 park_bench_arguments() {
-  local here
-  here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-  littermap=${1:-$here/build/cli/littermap}
+  littermap=${1:-$bench_checkout/build/cli/littermap}
   work=${2:-${TMPDIR:-/tmp}/littermap-slam-park}
   shift $(($# > 2 ? 2 : $#))
   run_names=("$@")
@@ -38,8 +39,7 @@ park_bench_arguments() {
 # its routes (`simulate --route`), or a combination (park_large/perimeter:2, park_tilts@101:2).
 simulate_park_run() {
   local littermap=$1 work=$2 run_name=$3
-  local here world flags=() run_dir
-  here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+  local world flags=() run_dir
   world=${run_name%%:*}
   if [[ $run_name == *:* ]]; then flags=(--run-seed "${run_name#*:}"); fi
   if [[ $world == *@* ]]; then
@@ -51,7 +51,7 @@ simulate_park_run() {
   if [[ ! -f $run_dir/truth/trajectory.tum ]]; then
     rm -rf "$run_dir"
     mkdir -p "$run_dir"
-    "$littermap" -q simulate "$here/samples/worlds/${world%%/*}.yaml" -o "$run_dir/bag" \
+    "$littermap" -q simulate "$bench_checkout/samples/worlds/${world%%/*}.yaml" -o "$run_dir/bag" \
       --truth "$run_dir/truth" "${flags[@]}" >/dev/null
   fi
   printf '%s\n' "$run_dir"

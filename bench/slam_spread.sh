@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # How far one park run's ATE moves when the reconstruction's options move by a hair: each run is
-# reconstructed (hybrid) with the shipped options and once per line of PERTURBATIONS below, each
-# one option moved by 0.2 % of its default, which no tuning could tell apart. A reconstruction
+# reconstructed (hybrid) with the shipped options and once per entry of `perturbations` below,
+# each one option moved by 0.2 % of its default, which no tuning could tell apart. A reconstruction
 # takes discrete decisions (which routine places a scan, which loops are taken); where a decision
 # sits at its threshold, the hair flips it and the run becomes another draw. The table says, per
 # run, the shipped ATE and the least, mean and largest over the perturbed ones; the summary, what
@@ -30,6 +30,9 @@ perturbations=(
   "key_frame_translation_m: 0.501"
 )
 mkdir -p "$work"
+for k in "${!perturbations[@]}"; do
+  printf '%s\n' "${perturbations[$k]}" >"$work/perturbation_$k.yaml"
+done
 
 jobs=$work/spread_jobs.txt
 : >"$jobs"
@@ -37,23 +40,22 @@ for run_name in "${run_names[@]}"; do
   run_dir=$(simulate_park_run "$littermap" "$work" "$run_name")
   printf '%s\t%s\t-\n' "$run_name" "$run_dir" >>"$jobs"
   for k in "${!perturbations[@]}"; do
-    printf '%s\n' "${perturbations[$k]}" >"$run_dir/perturbation_$k.yaml"
     printf '%s\t%s\t%s\n' "$run_name" "$run_dir" "$k" >>"$jobs"
   done
 done
 
-# reconstruct_one RUN_DIR K: the hybrid reconstruction with perturbation K (- for none) and its
-# ATE in RUN_DIR/spread-K/eval.json.
+# reconstruct_one RUN_DIR K: the hybrid reconstruction with perturbation K (- for none, else
+# WORK_DIR/perturbation_K.yaml) and its ATE in RUN_DIR/spread-K/eval.json.
 reconstruct_one() {
   local run_dir=$1 k=$2 out=$1/spread-$2 options=()
-  if [[ $k != - ]]; then options=(--options "$run_dir/perturbation_$k.yaml"); fi
+  if [[ $k != - ]]; then options=(--options "$work/perturbation_$k.yaml"); fi
   rm -rf "$out"
   "$littermap" -q reconstruct "$run_dir/bag" -o "$out" "${options[@]}" >"$out.log" 2>&1
   "$littermap" eval trajectory "$out/trajectory.tum" "$run_dir/truth/trajectory.tum" --json \
     >"$out/eval.json"
 }
 export -f reconstruct_one
-export littermap
+export littermap work
 # shellcheck disable=SC2016  # $0 and $1 are the job's, expanded by the inner bash
 cut -f2,3 "$jobs" | xargs -P "$(nproc)" -L 1 bash -c 'reconstruct_one "$0" "$1"'
 
