@@ -17,6 +17,9 @@ void LandmarkMapOptions::Validate() const {
   if (!(association_gate_m > 0) || !(radius_gate_m > 0) || !(active_path_m > 0)) {
     throw UsageError("landmarks: association gates and active_path_m must be > 0");
   }
+  if (!(max_graph_radius_spread_m >= 0)) {
+    throw UsageError("landmarks: max_graph_radius_spread_m must be >= 0");
+  }
   if (!(local_path_m > 0) || !(min_loop_path_m > 0) || !(max_search_range_m > 0) ||
       !(pair_tolerance_m > 0) || !(min_pair_distance_m >= 0) || !(inlier_gate_m > 0) ||
       min_inliers < 3 || !(min_inlier_spread_m >= 0) || !(distinct_transform_m > 0) ||
@@ -159,6 +162,7 @@ std::size_t LandmarkMap::AddKeyFrame(std::size_t key_frame, const PlanarPose& T_
     // Running means until the next optimisation recomputes them from the poses.
     landmark.position_world = (landmark.position_world * n + world[i]) / (n + 1);
     landmark.radius_m = (landmark.radius_m * n + observations[i].radius_m) / (n + 1);
+    landmark.radius_sq_sum_m2 += observations[i].radius_m * observations[i].radius_m;
     ++landmark.observations;
     landmark.last_seen_path_m = path_m;
     landmark.last_key_frame = key_frame;
@@ -318,6 +322,10 @@ void LandmarkMap::Merge(const LandmarkLoop& loop) {
     relabel[local] = old;
     Landmark& target = landmarks_.at(old);
     Landmark& source = landmarks_.at(local);
+    target.radius_m = (target.radius_m * static_cast<double>(target.observations) +
+                       source.radius_m * static_cast<double>(source.observations)) /
+                      static_cast<double>(target.observations + source.observations);
+    target.radius_sq_sum_m2 += source.radius_sq_sum_m2;
     target.observations += source.observations;
     if (source.last_seen_path_m >= target.last_seen_path_m) {
       target.last_seen_path_m = source.last_seen_path_m;
@@ -326,6 +334,7 @@ void LandmarkMap::Merge(const LandmarkLoop& loop) {
     target.first_seen_path_m = std::min(target.first_seen_path_m, source.first_seen_path_m);
     source.merged = true;
     source.observations = 0;
+    source.radius_sq_sum_m2 = 0;
   }
   for (LandmarkSighting& s : sightings_) {
     if (const auto it = relabel.find(s.landmark); it != relabel.end()) s.landmark = it->second;
@@ -349,11 +358,16 @@ void LandmarkMap::UpdatePositions(const std::vector<PlanarPose>& key_frame_poses
   }
 }
 
+bool LandmarkMap::InGraph(const Landmark& landmark) const {
+  if (landmark.merged || landmark.observations < options_.min_graph_observations) return false;
+  const double n = static_cast<double>(landmark.observations);
+  const double variance_m2 = landmark.radius_sq_sum_m2 / n - landmark.radius_m * landmark.radius_m;
+  return variance_m2 <= options_.max_graph_radius_spread_m * options_.max_graph_radius_spread_m;
+}
+
 std::size_t LandmarkMap::graph_landmarks() const {
-  return static_cast<std::size_t>(
-      std::count_if(landmarks_.begin(), landmarks_.end(), [&](const Landmark& l) {
-        return !l.merged && l.observations >= options_.min_graph_observations;
-      }));
+  return static_cast<std::size_t>(std::count_if(landmarks_.begin(), landmarks_.end(),
+                                                [&](const Landmark& l) { return InGraph(l); }));
 }
 
 }  // namespace littermap::reconstruct

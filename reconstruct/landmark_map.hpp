@@ -38,6 +38,10 @@ struct LandmarkMapOptions {
   double radius_gate_m = 0.08;
   double active_path_m = 20;
   std::size_t min_graph_observations = 2;  // a landmark enters the graph with this many
+  // ... and if its fitted radius varies by at most this much (standard deviation over its
+  // sightings): a trunk or a pole is the same circle from every side, a bush or a rock is not,
+  // and its centre moves with the view.
+  double max_graph_radius_spread_m = 0.015;
   // Place recognition.
   double local_path_m = 15;     // the constellation: landmarks seen within this much path
   double min_loop_path_m = 40;  // old landmarks: not seen within this much path
@@ -61,6 +65,7 @@ struct LandmarkMapOptions {
 struct Landmark {
   Eigen::Vector2d position_world = Eigen::Vector2d::Zero();
   double radius_m = 0;
+  double radius_sq_sum_m2 = 0;  // over the sightings, for the radius's spread
   std::size_t observations = 0;
   double first_seen_path_m = 0;
   double last_seen_path_m = 0;
@@ -102,7 +107,9 @@ class LandmarkMap {
 
   const std::vector<Landmark>& landmarks() const { return landmarks_; }
   const std::vector<LandmarkSighting>& sightings() const { return sightings_; }
-  // Landmarks in use with at least min_graph_observations sightings.
+  // Whether a landmark holds the pose graph: in use, with at least min_graph_observations
+  // sightings whose radii agree (max_graph_radius_spread_m).
+  bool InGraph(const Landmark& landmark) const;
   std::size_t graph_landmarks() const;
 
  private:

@@ -25,6 +25,7 @@
 #include "reconstruct/scan_alignment.hpp"
 #include "reconstruct/scan_points.hpp"
 #include "reconstruct/terrain_relief.hpp"
+#include "reconstruct/tilt_rocking.hpp"
 #include "reconstruct/tracker.hpp"
 
 namespace littermap::reconstruct {
@@ -67,6 +68,10 @@ struct SlamOptions {
   bool landmarks = true;
   LandmarkExtractionOptions landmark_extraction;
   LandmarkMapOptions landmark_map;
+  // No sightings from a scan whose tilt is further than this from the median tilt of the last
+  // landmark_rocking_window_s (reconstruct/tilt_rocking.hpp).
+  double landmark_max_rocking_rad = 0.05;
+  double landmark_rocking_window_s = 2;
   double landmark_loop_search_every_m = 2;  // path between two constellation searches
   // After a constellation merge and optimisation, the merged landmarks' sightings must fit: their
   // mean chi-squared (2 degrees of freedom, 2 expected) at most this.
@@ -262,6 +267,7 @@ class SlamPipeline {
   std::size_t last_landmark_optimised_key_frame_ = 0;
   MovingEchoFilter moving_echoes_;
   TerrainRelief terrain_relief_;
+  TiltRocking tilt_rocking_;
   OccupancyGrid grid_;
   std::vector<PoseGraphEdge> edges_;
   std::vector<std::size_t> unchecked_loops_;  // indices into edges_ since the last optimisation
@@ -272,8 +278,8 @@ class SlamPipeline {
   // Scans so far that the camera placed (routine rgbd), likewise.
   std::vector<std::size_t> scans_by_camera_;
   std::optional<double> first_odometry_z_m_;
-  bool tilted_ = false;          // some scan came with the base's tilt
-  double max_scan_range_m_ = 0;  // the scanner's, as its scans state it
+  bool tilted_ = false;        // some scan came with the base's tilt
+  bool gyro_heading_ = false;  // some scan's odometry turned with a gyro
   // Every scan's echoes for the map, one per map cell, within map_max_range_m, relative to the
   // base in whole centimetres: a 15-minute run at 40 Hz keeps 34 000 scans until the end (440 MB
   // at full resolution in double, 60 MB like this).

@@ -155,5 +155,36 @@ TEST_F(LandmarkMapTest, ARowOfTreesFixesNothingAlongTheRow) {
   EXPECT_FALSE(map_.FindLoop(here, path_m_, {}).has_value());
 }
 
+TEST(LandmarkMapGraphTest, KeepsRoundObstaclesWhoseRadiusChangesWithTheViewOutOfTheGraph) {
+  // A trunk fits the same circle from every side; a bush or a rock fits a different one from each,
+  // and its centre moves with the view. 10 key frames see both at the same place.
+  const auto survey = [](double max_graph_radius_spread_m) {
+    LandmarkMapOptions options;
+    options.max_graph_radius_spread_m = max_graph_radius_spread_m;
+    LandmarkMap map(options);
+    std::mt19937 rng(5);
+    std::normal_distribution<double> trunk_noise(0, 0.008);          // 8 mm
+    std::uniform_real_distribution<double> bush_radius(0.17, 0.27);  // 29 mm
+    for (std::size_t k = 0; k < 10; ++k) {
+      LandmarkObservation trunk, bush;
+      trunk.centre_base = {4, 1};
+      trunk.radius_m = 0.25 + trunk_noise(rng);
+      bush.centre_base = {4, -3};
+      bush.radius_m = bush_radius(rng);
+      for (LandmarkObservation* o : {&trunk, &bush}) {
+        o->covariance_base = 0.02 * 0.02 * Eigen::Matrix2d::Identity();
+      }
+      map.AddKeyFrame(k, {}, static_cast<double>(k) * 0.1, {trunk, bush});
+    }
+    return map;
+  };
+  const LandmarkMap gated = survey(0.015);
+  ASSERT_EQ(gated.landmarks().size(), 2U);
+  EXPECT_TRUE(gated.InGraph(gated.landmarks()[0]));
+  EXPECT_FALSE(gated.InGraph(gated.landmarks()[1]));
+  EXPECT_EQ(gated.graph_landmarks(), 1U);
+  EXPECT_EQ(survey(0.05).graph_landmarks(), 2U);
+}
+
 }  // namespace
 }  // namespace littermap::reconstruct
