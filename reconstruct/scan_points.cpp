@@ -1,5 +1,6 @@
 #include "reconstruct/scan_points.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -95,6 +96,10 @@ Points2 TransformPoints(const PlanarPose& T, const Points2& points) {
   out.reserve(points.size());
   for (const Eigen::Vector2d& p : points) out.push_back(Transform(T, p));
   return out;
+}
+
+double TiltAngle(const Tilt& tilt) {
+  return std::acos(std::clamp(std::cos(tilt.roll_rad) * std::cos(tilt.pitch_rad), -1.0, 1.0));
 }
 
 }  // namespace littermap::reconstruct

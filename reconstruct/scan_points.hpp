@@ -33,6 +33,9 @@ struct Tilt {
   double pitch_rad = 0;
 };
 
+// The angle between the base's up axis and gravity's (rad).
+double TiltAngle(const Tilt& tilt);
+
 struct ScanPoints {
   Points2 points_base;  // T_base_laser applied
   std::size_t beams = 0;

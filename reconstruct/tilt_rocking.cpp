@@ -1,7 +1,6 @@
 #include "reconstruct/tilt_rocking.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <vector>
 
 namespace littermap::reconstruct {
@@ -26,10 +25,8 @@ double TiltRocking::Add(TimestampNs stamp_ns, const Tilt& tilt) {
     roll_rad.push_back(s.tilt.roll_rad);
     pitch_rad.push_back(s.tilt.pitch_rad);
   }
-  // The angle between the two planes' normals, as for the tilt from level (ScanToPoints).
-  const double droll_rad = tilt.roll_rad - Median(std::move(roll_rad));
-  const double dpitch_rad = tilt.pitch_rad - Median(std::move(pitch_rad));
-  return std::acos(std::clamp(std::cos(droll_rad) * std::cos(dpitch_rad), -1.0, 1.0));
+  return TiltAngle(
+      {tilt.roll_rad - Median(std::move(roll_rad)), tilt.pitch_rad - Median(std::move(pitch_rad))});
 }
 
 }  // namespace littermap::reconstruct

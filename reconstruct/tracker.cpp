@@ -65,11 +65,6 @@ void FuseWithPrediction(const PlanarPose& predicted, const Eigen::Matrix3d& pred
   step->information = information;
 }
 
-// The angle between the base's up axis and gravity's.
-double TiltAngle(const Tilt& tilt) {
-  return std::acos(std::clamp(std::cos(tilt.roll_rad) * std::cos(tilt.pitch_rad), -1.0, 1.0));
-}
-
 bool Finite(const PlanarPose& p) {
   return std::isfinite(p.x_m) && std::isfinite(p.y_m) && std::isfinite(p.theta_rad);
 }
