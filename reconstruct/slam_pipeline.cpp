@@ -97,7 +97,7 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdomet
   last_stamp_ns_ = scan.stamp_ns;
   tilted_ = tilted_ || tilt.has_value();
   gyro_heading_ = gyro_heading_ || (odometry && odometry->heading_from_gyro);
-  const double rocking_rad = tilt ? tilt_rocking_.Add(scan.stamp_ns, *tilt) : 0.0;
+  if (tilt) tilt_rocking_.Add(scan.stamp_ns, *tilt);
   ScanPoints points = ScanToPoints(scan, T_base_laser_, options_.points, tilt);
   quality_.ground_echoes += points.ground_beams;
   TrackInput input;
@@ -161,7 +161,8 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdomet
   if (step.new_key_frame) {
     if (step.key_frame > 0) AddGraphEdge(input, step);
     // A scan taken while a root or a kerb rocks the base cuts trunks off their usual circle.
-    if (options_.landmarks && rocking_rad <= options_.landmark_max_rocking_rad) {
+    if (options_.landmarks &&
+        !(tilt && tilt_rocking_.LatestRockingRad() > options_.landmark_max_rocking_rad)) {
       const KeyFrame& frame = map_.key_frames()[step.key_frame];
       const std::vector<LandmarkObservation> circles =
           ExtractLandmarks(echoes_base, {T_base_laser_.x_m, T_base_laser_.y_m},

@@ -14,10 +14,15 @@ double Median(std::vector<double> values) {
 
 }  // namespace
 
-double TiltRocking::Add(TimestampNs stamp_ns, const Tilt& tilt) {
+void TiltRocking::Add(TimestampNs stamp_ns, const Tilt& tilt) {
   samples_.push_back({stamp_ns, tilt});
   const auto window_ns = static_cast<TimestampNs>(window_s_ * 1e9);
   while (samples_.front().stamp_ns < stamp_ns - window_ns) samples_.pop_front();
+}
+
+double TiltRocking::LatestRockingRad() const {
+  if (samples_.empty()) return 0;
+  const Tilt& tilt = samples_.back().tilt;
   std::vector<double> roll_rad, pitch_rad;
   roll_rad.reserve(samples_.size());
   pitch_rad.reserve(samples_.size());

@@ -15,9 +15,12 @@ class TiltRocking {
  public:
   explicit TiltRocking(double window_s) : window_s_(window_s) {}
 
-  // The tilt at the next scan (stamps increasing); returns its angle (rad) from the median tilt
-  // of the scans within window_s up to it, this one included.
-  double Add(TimestampNs stamp_ns, const Tilt& tilt);
+  // The tilt at the next scan (stamps increasing).
+  void Add(TimestampNs stamp_ns, const Tilt& tilt);
+  // The latest tilt's angle (rad) from the median tilt of the scans within window_s up to it,
+  // that one included; 0 before any. Asked at key frames only, so the median is not taken for
+  // every scan.
+  double LatestRockingRad() const;
 
  private:
   struct Sample {
