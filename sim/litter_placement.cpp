@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/footprint.hpp"
 #include "sim/litter_wear.hpp"
 #include "sim/random.hpp"
 #include "sim/world.hpp"
@@ -140,11 +141,43 @@ struct Sinking {
   double depth_min = 0.3, depth_max = 0.6;
 };
 
+// Clearance between two small objects: they may lie side by side, not through each other.
+constexpr double kSmallObjectGapM = 0.02;
+
+bool OverlapsSmallObject(const World& world, const Footprint& footprint) {
+  for (const WorldObject& o : world.objects) {
+    if ((o.kind == ObjectKind::kLitter || o.kind == ObjectKind::kNatural) &&
+        FootprintsOverlap(footprint, FootprintOf(o), kSmallObjectGapM)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Where `object` (posed, its centre at the proposed spot) is clear of every small object
+// placed before it: the spot itself, or the nearest of steps of 5 cm, 10 cm, ... in directions
+// drawn from `rng`. Only an object that overlaps draws from `rng`, so a world where nothing
+// overlaps draws what it drew before, and moving one object leaves every other where it was.
+Eigen::Vector2d ClearOfSmallObjects(const World& world, const WorldObject& object, Rng& rng) {
+  Footprint footprint = FootprintOf(object);
+  const Eigen::Vector2d proposed = footprint.center_m;
+  for (int step = 1; step <= 100 && OverlapsSmallObject(world, footprint); ++step) {
+    const double angle = rng.Uniform(-kPi, kPi);
+    const Eigen::Vector2d candidate =
+        proposed + 0.05 * step * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    if (InPark(world, candidate) && !InsideStructure(world, candidate)) {
+      footprint.center_m = candidate;
+    }
+  }
+  return footprint.center_m;
+}
+
 // Places one small object of `label` near what `draw` proposes, worn as `wear` says (none for
 // natural objects). A `spot` moves it there, unsunk, once every draw of `rng` is taken as
-// without it, so that moving some items leaves the others where they were.
+// without it, so that moving some items leaves the others where they were. An object that
+// would share space with one placed before is moved clear with draws from `clear_rng`.
 template <typename Draw>
-void PlaceSmall(World& world, Rng& rng, ObjectKind kind, const std::string& label,
+void PlaceSmall(World& world, Rng& rng, Rng& clear_rng, ObjectKind kind, const std::string& label,
                 const Sinking& sinking, const LitterWear* wear,
                 const std::optional<Eigen::Vector2d>& spot, Draw draw) {
   const Kind& k = Catalog().at(label);
@@ -164,13 +197,29 @@ void PlaceSmall(World& world, Rng& rng, ObjectKind kind, const std::string& labe
   if (lying) o.orientation.pitch_rad = kPi / 2;  // the local z axis lies flat
   if (wear != nullptr) ApplyLitterWear(*wear, o);
   const double height = lying ? o.size_m.x() : o.size_m.z();
-  if (world.terrain.GroundAt(p) == GroundType::kGrass && rng.Bernoulli(sinking.probability)) {
-    o.hidden_fraction = rng.Uniform(sinking.depth_min, sinking.depth_max);
-  }
+  const auto on_grass = [&world](const Eigen::Vector2d& at) {
+    return world.terrain.GroundAt(at) == GroundType::kGrass;
+  };
+  const auto sunk = [&sinking](Rng& draws) {
+    return draws.Bernoulli(sinking.probability)
+               ? draws.Uniform(sinking.depth_min, sinking.depth_max)
+               : 0.0;
+  };
+  if (on_grass(p)) o.hidden_fraction = sunk(rng);
   if (spot) {
     p = *spot;
     o.hidden_fraction = 0;
   }
+  o.center_m.head<2>() = p;
+  const Eigen::Vector2d clear = ClearOfSmallObjects(world, o, clear_rng);
+  if (clear != p && !spot) {  // moved: the ground where it lies now decides how it sinks
+    if (!on_grass(clear)) {
+      o.hidden_fraction = 0;
+    } else if (!on_grass(p)) {
+      o.hidden_fraction = sunk(clear_rng);
+    }
+  }
+  p = clear;
   o.center_m = {p.x(), p.y(),
                 world.terrain.HeightAt(p) + k.raised_m + height * (0.5 - o.hidden_fraction)};
   AddObject(world, o);
@@ -224,6 +273,7 @@ void PlaceLitter(World& world) {
   // The wear of every item and where items dropped on gravel fall come from streams of their
   // own: a world with none of it draws exactly what it drew before wear existed.
   Rng wear_rng(world.spec.seed, 302), gravel_rng(world.spec.seed, 303);
+  Rng clear_rng(world.spec.seed, 304);
   const Sinking sinking{spec.half_hidden_fraction, spec.half_hidden_depth_min,
                         spec.half_hidden_depth_max};
   std::vector<Eigen::Vector2d> hotspots = world.hotspots_m;
@@ -247,7 +297,7 @@ void PlaceLitter(World& world) {
         wear.on_gravel ? OnGravel(world, gravel_rng) : std::nullopt;
     const bool clustered = !hotspots.empty() && draw_rng.Bernoulli(spec.hotspot_fraction);
     const Eigen::Vector2d center = clustered ? pick_hotspot(draw_rng) : Eigen::Vector2d::Zero();
-    PlaceSmall(world, draw_rng, ObjectKind::kLitter, label, sinking, &wear, spot, [&] {
+    PlaceSmall(world, draw_rng, clear_rng, ObjectKind::kLitter, label, sinking, &wear, spot, [&] {
       if (clustered) {
         return Eigen::Vector2d(center.x() + draw_rng.Normal(0, spec.hotspot_sigma_m),
                                center.y() + draw_rng.Normal(0, spec.hotspot_sigma_m));
@@ -270,7 +320,7 @@ void PlaceLitter(World& world) {
 }
 
 void PlaceNaturalObjects(World& world) {
-  Rng rng(world.spec.seed, 401);
+  Rng rng(world.spec.seed, 401), clear_rng(world.spec.seed, 402);
   std::vector<Eigen::Vector2d> trees;
   for (const WorldObject& o : world.objects) {
     if (o.label == "tree_trunk") trees.push_back(o.center_m.head<2>());
@@ -290,13 +340,15 @@ void PlaceNaturalObjects(World& world) {
                      : Eigen::Vector2d(rng.Uniform(0, world.spec.size_x_m),
                                        rng.Uniform(0, world.spec.size_y_m));
     const double sigma = flower ? 1.5 : under_tree ? 2.0 : 0.0;
-    PlaceSmall(world, rng, ObjectKind::kNatural, label, Sinking{}, nullptr, std::nullopt, [&] {
-      if (sigma == 0) {
-        return Eigen::Vector2d(rng.Uniform(0, world.spec.size_x_m),
-                               rng.Uniform(0, world.spec.size_y_m));
-      }
-      return Eigen::Vector2d(center.x() + rng.Normal(0, sigma), center.y() + rng.Normal(0, sigma));
-    });
+    PlaceSmall(world, rng, clear_rng, ObjectKind::kNatural, label, Sinking{}, nullptr, std::nullopt,
+               [&] {
+                 if (sigma == 0) {
+                   return Eigen::Vector2d(rng.Uniform(0, world.spec.size_x_m),
+                                          rng.Uniform(0, world.spec.size_y_m));
+                 }
+                 return Eigen::Vector2d(center.x() + rng.Normal(0, sigma),
+                                        center.y() + rng.Normal(0, sigma));
+               });
   }
 }
 
