@@ -155,9 +155,10 @@ bool OverlapsSmallObject(const World& world, const Footprint& footprint) {
 }
 
 // Where `object` (posed, its centre at the proposed spot) is clear of every small object
-// placed before it: the spot itself, or the nearest of steps of 5 cm, 10 cm, ... in directions
-// drawn from `rng`. Only an object that overlaps draws from `rng`, so a world where nothing
-// overlaps draws what it drew before, and moving one object leaves every other where it was.
+// placed before it: the spot itself, or the first clear one of steps of 5 cm, 10 cm, ... away
+// from it, each in a direction drawn from `rng`. Only an object that overlaps draws from `rng`, so
+// a world where nothing overlaps draws what it drew before, and moving one object leaves every
+// other where it was.
 Eigen::Vector2d ClearOfSmallObjects(const World& world, const WorldObject& object, Rng& rng) {
   Footprint footprint = FootprintOf(object);
   const Eigen::Vector2d proposed = footprint.center_m;
