@@ -78,7 +78,7 @@ void SegmentAndClassify(benchmark::State& state, const std::vector<Frame>& frame
                                           detect::NormalMethod::kAverage3dGradient};
   options.cloud.normal_method = methods[state.range(1)];
   detect::FrameSegmenter segmenter(options);
-  std::size_t i = 0, objects = 0, blobs = 0, refined = 0, with_ground = 0;
+  std::size_t i = 0, objects = 0, blobs = 0, refined = 0, split = 0, with_ground = 0;
   detect::SegmentationTimings sum;
   double classify_ms = 0;
   for (auto _ : state) {
@@ -98,6 +98,7 @@ void SegmentAndClassify(benchmark::State& state, const std::vector<Frame>& frame
     objects += segmentation.objects.size();
     blobs += segmentation.blobs;
     refined += segmentation.refined;
+    split += segmentation.split;
     with_ground += segmentation.ground_found ? 1 : 0;
     sum += segmentation.timings;
   }
@@ -105,6 +106,7 @@ void SegmentAndClassify(benchmark::State& state, const std::vector<Frame>& frame
   state.counters["ground_found"] = double(with_ground) / n;
   state.counters["blobs"] = double(blobs) / n;
   state.counters["refined"] = double(refined) / n;
+  state.counters["split"] = double(split) / n;
   state.counters["objects"] = double(objects) / n;
   state.counters["normals_ms"] = sum.cloud_ms / n;
   state.counters["components_ms"] = sum.components_ms / n;

@@ -113,10 +113,11 @@ FrameSegmentation FrameSegmenter::Segment(const cv::Mat& colour_bgr, const cv::M
   }
   out.timings.texture_ms = MsSince(&clock);
   ObjectClusterResult objects = ExtractObjects(colour_bgr, step > 1 ? full_points_ : cloud, ground,
-                                               out.refinement, options_.objects);
+                                               out.refinement, options_.objects, step);
   out.objects = std::move(objects.objects);
   out.blobs = objects.blobs;
   out.refined = objects.refined;
+  out.split = objects.split;
   out.timings.objects_ms = MsSince(&clock);
   return out;
 }

@@ -57,6 +57,7 @@ struct FrameSegmentation {
   std::size_t components = 0;
   std::size_t blobs = 0;
   std::size_t refined = 0;  // blobs refined by GrabCut
+  std::size_t split = 0;    // blobs too large for litter cut into parts
   SegmentationTimings timings;
 };
 

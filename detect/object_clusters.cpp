@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
@@ -165,6 +166,136 @@ bool Measure(const OrganizedCloud& cloud, const GroundSurface& surface, const cv
   return true;
 }
 
+// The parts of `blob` (roi-sized) connected in space: 4-neighbours with points closer than the
+// gap at their depth, on the image's pixels sampled every `step` (the blob's resolution when it
+// came from geometry at that step). Samples without a point, or with one within
+// split_min_height_m of the ground, belong to no part.
+struct Part {
+  int samples = 0;
+  int j0 = 0, i0 = 0, j1 = 0, i1 = 0;  // the samples' box (columns j, rows i)
+  float lowest_m = 0, highest_m = 0;   // heights above the ground of its points
+};
+
+struct Parts {
+  int step = 1;
+  cv::Point first;  // the roi's pixel of sample (0, 0), on the image's grid of samples
+  cv::Mat labels;   // CV_32S per sample: 0 none, else 1 + the part's index
+  std::vector<Part> parts;
+
+  // The part's pixels as a mask of `box` (roi pixels): each blob pixel takes its sample's part.
+  cv::Mat Mask(std::size_t part, const cv::Mat& blob, cv::Rect* box) const {
+    const Part& p = parts[part];
+    *box = cv::Rect(first.x + p.j0 * step, first.y + p.i0 * step, (p.j1 - p.j0 + 1) * step,
+                    (p.i1 - p.i0 + 1) * step) &
+           cv::Rect(cv::Point(0, 0), blob.size());
+    cv::Mat mask(box->size(), CV_8U, cv::Scalar(0));
+    const int label = static_cast<int>(part) + 1;
+    for (int v = 0; v < box->height; ++v) {
+      const int i = (v + box->y - first.y) / step;
+      for (int u = 0; u < box->width; ++u) {
+        const int j = (u + box->x - first.x) / step;
+        if (labels.at<int>(i, j) == label && blob.at<std::uint8_t>(v + box->y, u + box->x)) {
+          mask.at<std::uint8_t>(v, u) = 255;
+        }
+      }
+    }
+    return mask;
+  }
+};
+
+Parts LabelPartsInSpace(const OrganizedCloud& cloud, const GroundSurface& surface,
+                        const cv::Mat& blob, const cv::Rect& roi, int step,
+                        const ObjectClusterOptions& options) {
+  Parts out;
+  out.step = step;
+  out.first = {(step - roi.x % step) % step, (step - roi.y % step) % step};
+  const int cols = (roi.width - out.first.x + step - 1) / step;
+  const int rows = (roi.height - out.first.y + step - 1) / step;
+  const auto index = [&](int j, int i) {
+    return static_cast<std::size_t>(
+        cloud.Index(roi.x + out.first.x + j * step, roi.y + out.first.y + i * step));
+  };
+  // Height above the ground of every sample that may join a part, NaN for the others: points
+  // this close to the ground would chain everything standing on it into one part.
+  cv::Mat heights(rows, cols, CV_32F, cv::Scalar(std::numeric_limits<float>::quiet_NaN()));
+  for (int i = 0; i < rows; ++i) {
+    const auto* in = blob.ptr<std::uint8_t>(out.first.y + i * step) + out.first.x;
+    auto* h = heights.ptr<float>(i);
+    for (int j = 0; j < cols; ++j) {
+      if (!in[j * step] || cloud.depth_m[index(j, i)] <= 0) continue;
+      const auto above = static_cast<float>(surface.HeightAbove(cloud.points_m[index(j, i)]));
+      if (above >= options.split_min_height_m) h[j] = above;
+    }
+  }
+  const double gap_per_m = options.split_max_gap_per_m * step;  // the samples' footprint
+  out.labels = cv::Mat(rows, cols, CV_32S, cv::Scalar(0));
+  std::vector<cv::Point> stack;
+  for (int i = 0; i < rows; ++i) {
+    for (int j = 0; j < cols; ++j) {
+      if (out.labels.at<int>(i, j) || std::isnan(heights.at<float>(i, j))) continue;
+      const int label = static_cast<int>(out.parts.size()) + 1;
+      Part part{0, j, i, j, i, heights.at<float>(i, j), heights.at<float>(i, j)};
+      out.labels.at<int>(i, j) = label;
+      stack.assign(1, {j, i});
+      while (!stack.empty()) {
+        const cv::Point p = stack.back();
+        stack.pop_back();
+        const float h = heights.at<float>(p.y, p.x);
+        ++part.samples;
+        part.j0 = std::min(part.j0, p.x), part.j1 = std::max(part.j1, p.x);
+        part.i0 = std::min(part.i0, p.y), part.i1 = std::max(part.i1, p.y);
+        part.lowest_m = std::min(part.lowest_m, h), part.highest_m = std::max(part.highest_m, h);
+        const Eigen::Vector3f& here = cloud.points_m[index(p.x, p.y)];
+        const auto gap = static_cast<float>(options.split_max_gap_m +
+                                            gap_per_m * cloud.depth_m[index(p.x, p.y)]);
+        const cv::Point neighbours[] = {
+            {p.x + 1, p.y}, {p.x - 1, p.y}, {p.x, p.y + 1}, {p.x, p.y - 1}};
+        for (const cv::Point& q : neighbours) {
+          if (q.x < 0 || q.y < 0 || q.x >= cols || q.y >= rows) continue;
+          if (out.labels.at<int>(q.y, q.x) || std::isnan(heights.at<float>(q.y, q.x))) continue;
+          if ((cloud.points_m[index(q.x, q.y)] - here).squaredNorm() >= gap * gap) continue;
+          out.labels.at<int>(q.y, q.x) = label;
+          stack.push_back(q);
+        }
+      }
+      out.parts.push_back(part);
+    }
+  }
+  return out;
+}
+
+// Whether a measured object is litter-sized.
+bool LitterSized(const SegmentedObject& object, const ObjectClusterOptions& options) {
+  return object.size_m >= options.min_size_m && object.size_m <= options.max_size_m &&
+         object.height_m <= options.max_height_m;
+}
+
+// The litter-sized parts of a blob too large for litter, measured as they are; none when there
+// are more than split_max_parts of them (clutter, not litter beside a trunk). A part must lie on
+// the ground (lowest point at most split_max_base_m above it).
+void AddLitterSizedParts(const OrganizedCloud& cloud, const GroundSurface& surface,
+                         const cv::Mat& blob, const cv::Rect& roi, int step,
+                         const ObjectClusterOptions& options, ObjectClusterResult* result) {
+  const Parts parts = LabelPartsInSpace(cloud, surface, blob, roi, step, options);
+  std::vector<SegmentedObject> litter;
+  for (std::size_t k = 0; k < parts.parts.size(); ++k) {
+    const Part& part = parts.parts[k];
+    if (part.samples * step * step < std::max(options.min_pixels, options.min_depth_points) ||
+        part.highest_m > options.max_height_m || part.lowest_m > options.split_max_base_m) {
+      continue;
+    }
+    cv::Rect box;
+    const cv::Mat mask = parts.Mask(k, blob, &box);
+    SegmentedObject object;
+    if (Measure(cloud, surface, mask, box + roi.tl(), options, &object) &&
+        LitterSized(object, options)) {
+      if (static_cast<int>(litter.size()) == options.split_max_parts) return;
+      litter.push_back(std::move(object));
+    }
+  }
+  for (auto& object : litter) result->objects.push_back(std::move(object));
+}
+
 }  // namespace
 
 void ObjectClusterOptions::Validate() const {
@@ -179,12 +310,18 @@ void ObjectClusterOptions::Validate() const {
   RequireOption(max_refine_pixels >= 100, kStage, "max_refine_pixels", ">= 100");
   RequireOption(uncertain_fringe_px >= 0 && uncertain_fringe_px <= 20, kStage,
                 "uncertain_fringe_px", "from 0 to 20");
+  RequireOption(split_max_gap_m > 0, kStage, "split_max_gap_m", "> 0");
+  RequireOption(split_max_gap_per_m >= 0, kStage, "split_max_gap_per_m", ">= 0");
+  RequireOption(split_min_height_m >= 0, kStage, "split_min_height_m", ">= 0");
+  RequireOption(split_max_base_m > split_min_height_m, kStage, "split_max_base_m",
+                "> split_min_height_m");
+  RequireOption(split_max_parts >= 1, kStage, "split_max_parts", ">= 1");
 }
 
 ObjectClusterResult ExtractObjects(const cv::Mat& colour_bgr, const OrganizedCloud& cloud,
                                    const GroundResult& ground,
                                    const TextureRefinementResult& refinement,
-                                   const ObjectClusterOptions& options) {
+                                   const ObjectClusterOptions& options, int blob_step_px) {
   ObjectClusterResult result;
   if (!ground.found) return result;
   cv::Mat blobs, stats, centroids;
@@ -198,12 +335,21 @@ ObjectClusterResult ExtractObjects(const cv::Mat& colour_bgr, const OrganizedClo
     ++result.blobs;
     const cv::Rect roi = Grown(box, options, image);
     const cv::Mat blob = blobs(roi) == b;
+    // Too large for litter: its parts that are apart in space may not be.
+    const auto cut_into_parts = [&] {
+      if (options.split) {
+        ++result.split;
+        AddLitterSizedParts(cloud, ground.surface, blob, roi, blob_step_px, options, &result);
+      } else {
+        ++result.rejected_size;
+      }
+    };
     cv::Mat mask = blob;
     if (options.refine) {
       cv::Mat core;
       cv::erode(blob, core, cv::Mat());
       if (CoreTooLarge(cloud, ground.surface, core, roi, options)) {
-        ++result.rejected_size;
+        cut_into_parts();
         continue;
       }
       ++result.refined;
@@ -214,9 +360,12 @@ ObjectClusterResult ExtractObjects(const cv::Mat& colour_bgr, const OrganizedClo
     SegmentedObject object;
     if (cv::countNonZero(mask) < options.min_pixels ||
         !Measure(cloud, ground.surface, mask, roi, options, &object) ||
-        object.size_m < options.min_size_m || object.size_m > options.max_size_m ||
-        object.height_m > options.max_height_m) {
+        object.size_m < options.min_size_m) {
       ++result.rejected_size;
+      continue;
+    }
+    if (!LitterSized(object, options)) {
+      cut_into_parts();
       continue;
     }
     result.objects.push_back(std::move(object));

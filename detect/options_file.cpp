@@ -136,6 +136,21 @@ const OptionSetters<O>& Setters() {
        Set<int>([](O& o) -> int& { return o.objects.segmentation.objects.uncertain_fringe_px; })},
       {"max_refine_pixels",
        Set<int>([](O& o) -> int& { return o.objects.segmentation.objects.max_refine_pixels; })},
+      {"split_objects",
+       Set<bool>([](O& o) -> bool& { return o.objects.segmentation.objects.split; })},
+      {"split_max_gap_m",
+       Set<double>([](O& o) -> double& { return o.objects.segmentation.objects.split_max_gap_m; })},
+      {"split_max_gap_per_m", Set<double>([](O& o) -> double& {
+         return o.objects.segmentation.objects.split_max_gap_per_m;
+       })},
+      {"split_min_height_m", Set<double>([](O& o) -> double& {
+         return o.objects.segmentation.objects.split_min_height_m;
+       })},
+      {"split_max_base_m", Set<double>([](O& o) -> double& {
+         return o.objects.segmentation.objects.split_max_base_m;
+       })},
+      {"split_max_parts",
+       Set<int>([](O& o) -> int& { return o.objects.segmentation.objects.split_max_parts; })},
       // Frames and items.
       {"every", Set<std::size_t>([](O& o) -> std::size_t& { return o.objects.every; })},
       {"max_pose_gap_s", Set<double>([](O& o) -> double& { return o.objects.max_pose_gap_s; })},

@@ -118,6 +118,66 @@ TEST(FrameSegmenter, CoresWiderThanLitterAreRejectedBeforeRefinement) {
   EXPECT_NEAR(result.objects[0].centroid_level_m.x(), 3.1, 0.06);
 }
 
+// A can lying before a larger carton: the camera sees the can's top against the carton's face, one
+// blob 0.6 m deep, too large for litter. Cut apart in space, both are found where they lie.
+TEST(FrameSegmenter, LitterTouchingLitterInTheImageIsCutApartInSpace) {
+  SyntheticScene scene;
+  scene.boxes.push_back({{2.0, -0.05, 0.0}, {2.12, 0.02, 0.07}, {40, 40, 200}});   // can
+  scene.boxes.push_back({{2.35, -0.15, 0.0}, {2.6, 0.2, 0.15}, {220, 220, 220}});  // carton
+  SegmentationOptions whole;
+  whole.objects.split = false;
+  EXPECT_TRUE(Segment(scene, whole).objects.empty());
+  const FrameSegmentation result = Segment(scene);
+  ASSERT_EQ(result.objects.size(), 2u);
+  std::vector<SegmentedObject> objects = result.objects;
+  std::sort(objects.begin(), objects.end(),
+            [](const auto& a, const auto& b) { return a.range_m < b.range_m; });
+  EXPECT_NEAR(objects[0].centroid_level_m.x(), 2.06, 0.05);
+  EXPECT_NEAR(objects[0].centroid_level_m.y(), -0.015, 0.03);
+  EXPECT_NEAR(objects[0].height_m, 0.07, 0.02);
+  EXPECT_NEAR(objects[1].centroid_level_m.x(), 2.45, 0.1);
+  EXPECT_NEAR(objects[1].centroid_level_m.y(), 0.025, 0.05);
+  EXPECT_NEAR(objects[1].height_m, 0.15, 0.02);
+}
+
+// A can before a trunk: one blob in the image, taller than litter. The trunk's part stays too
+// tall; the can's part is litter.
+TEST(FrameSegmenter, LitterBeforeATrunkIsFound) {
+  SyntheticScene scene;
+  scene.boxes.push_back({{2.0, -0.05, 0.0}, {2.12, 0.02, 0.07}, {40, 40, 200}});  // can
+  scene.boxes.push_back({{2.3, -0.2, 0.0}, {2.6, 0.2, 1.5}, {30, 60, 90}});       // trunk
+  SegmentationOptions whole;
+  whole.objects.split = false;
+  EXPECT_TRUE(Segment(scene, whole).objects.empty());
+  const FrameSegmentation result = Segment(scene);
+  ASSERT_EQ(result.objects.size(), 1u);
+  EXPECT_NEAR(result.objects[0].centroid_level_m.x(), 2.06, 0.05);
+  EXPECT_NEAR(result.objects[0].centroid_level_m.y(), -0.015, 0.03);
+  EXPECT_NEAR(result.objects[0].height_m, 0.07, 0.02);
+}
+
+// A blob of more litter-sized parts than split_max_parts is taken for clutter (a bush's leaves,
+// the things on a desk) and none of its parts is kept: here four cans before a wall, found only
+// when four parts are allowed.
+TEST(FrameSegmenter, ABlobOfManyLitterSizedPartsIsClutter) {
+  SyntheticScene scene;
+  for (const double y : {-0.4, -0.15, 0.1, 0.35}) {
+    scene.boxes.push_back({{2.0, y, 0.0}, {2.12, y + 0.07, 0.07}, {40, 40, 200}});
+  }
+  scene.boxes.push_back({{2.3, -0.6, 0.0}, {2.6, 0.6, 1.5}, {30, 60, 90}});
+  const FrameSegmentation clutter = Segment(scene);
+  EXPECT_EQ(clutter.split, 1u);
+  EXPECT_TRUE(clutter.objects.empty());
+  SegmentationOptions four;
+  four.objects.split_max_parts = 4;
+  const FrameSegmentation cans = Segment(scene, four);
+  ASSERT_EQ(cans.objects.size(), 4u);
+  for (const SegmentedObject& can : cans.objects) {
+    EXPECT_NEAR(can.centroid_level_m.x(), 2.06, 0.05);
+    EXPECT_NEAR(can.height_m, 0.07, 0.02);
+  }
+}
+
 // The TUM freiburg2 desk, camera about 0.8 m above the desk and pitched ~40 degrees down, and its
 // segmentation with the desk as the ground.
 struct TumDesk {
