@@ -25,6 +25,23 @@ FrameSegmentation Segment(const SyntheticScene& scene,
   return segmenter.Segment(colour, depth, K, test::CameraPose().cast<float>());
 }
 
+// The objects, nearest first.
+std::vector<SegmentedObject> NearestFirst(const FrameSegmentation& result) {
+  std::vector<SegmentedObject> objects = result.objects;
+  std::sort(objects.begin(), objects.end(),
+            [](const auto& a, const auto& b) { return a.range_m < b.range_m; });
+  return objects;
+}
+
+// The can-sized box 2 m ahead that several scenes hold (12 x 7 x 7 cm, level frame); found, it is
+// seen by its visible surfaces only: the centroid sits on the camera's side and top, within 5 cm.
+const SceneBox kCan{{2.0, -0.05, 0.0}, {2.12, 0.02, 0.07}, {40, 40, 200}};
+void ExpectTheCan(const SegmentedObject& object) {
+  EXPECT_NEAR(object.centroid_level_m.x(), 2.06, 0.05);
+  EXPECT_NEAR(object.centroid_level_m.y(), -0.015, 0.03);
+  EXPECT_NEAR(object.height_m, 0.07, 0.02);
+}
+
 TEST(FrameSegmenter, FindsTheGroundAndNothingElseOnAnEmptyLawn) {
   const FrameSegmentation result = Segment(SyntheticScene{});
   ASSERT_TRUE(result.ground_found);
@@ -47,18 +64,13 @@ TEST(FrameSegmenter, SlopedGroundIsGroundNotAnObject) {
 TEST(FrameSegmenter, CutsOutLitterSizedBoxesAndMeasuresThem) {
   SyntheticScene scene;
   // A can-sized box 2 m ahead and a flat carton 3 m ahead to the left.
-  scene.boxes.push_back({{2.0, -0.05, 0.0}, {2.12, 0.02, 0.07}, {40, 40, 200}});
+  scene.boxes.push_back(kCan);
   scene.boxes.push_back({{3.0, 0.5, 0.0}, {3.2, 0.6, 0.03}, {230, 230, 230}});
   const FrameSegmentation result = Segment(scene);
   ASSERT_TRUE(result.ground_found);
   ASSERT_EQ(result.objects.size(), 2u);
-  std::vector<SegmentedObject> objects = result.objects;
-  std::sort(objects.begin(), objects.end(),
-            [](const auto& a, const auto& b) { return a.range_m < b.range_m; });
-  // Visible surfaces only: the centroid sits on the camera's side and top, within 5 cm.
-  EXPECT_NEAR(objects[0].centroid_level_m.x(), 2.06, 0.05);
-  EXPECT_NEAR(objects[0].centroid_level_m.y(), -0.015, 0.03);
-  EXPECT_NEAR(objects[0].height_m, 0.07, 0.02);
+  const std::vector<SegmentedObject> objects = NearestFirst(result);
+  ExpectTheCan(objects[0]);
   EXPECT_NEAR(objects[0].size_m, 0.12, 0.04);
   EXPECT_NEAR(objects[1].centroid_level_m.x(), 3.1, 0.06);
   EXPECT_NEAR(objects[1].centroid_level_m.y(), 0.55, 0.04);
@@ -69,7 +81,7 @@ TEST(FrameSegmenter, CutsOutLitterSizedBoxesAndMeasuresThem) {
 // at full resolution, are the full-resolution geometry's: mask IoU >= 0.85, centroids within 1 cm.
 TEST(FrameSegmenter, GeometryAtHalfResolutionOutlinesObjectsAtFullResolution) {
   SyntheticScene scene;
-  scene.boxes.push_back({{2.0, -0.05, 0.0}, {2.12, 0.02, 0.07}, {40, 40, 200}});
+  scene.boxes.push_back(kCan);
   scene.boxes.push_back({{3.0, 0.5, 0.0}, {3.2, 0.6, 0.03}, {230, 230, 230}});
   scene.boxes.push_back({{4.0, -0.6, 0.0}, {4.08, -0.52, 0.08}, {40, 160, 220}});  // far: 10 px
   SegmentationOptions full, half;
@@ -122,19 +134,15 @@ TEST(FrameSegmenter, CoresWiderThanLitterAreRejectedBeforeRefinement) {
 // blob 0.6 m deep, too large for litter. Cut apart in space, both are found where they lie.
 TEST(FrameSegmenter, LitterTouchingLitterInTheImageIsCutApartInSpace) {
   SyntheticScene scene;
-  scene.boxes.push_back({{2.0, -0.05, 0.0}, {2.12, 0.02, 0.07}, {40, 40, 200}});   // can
+  scene.boxes.push_back(kCan);
   scene.boxes.push_back({{2.35, -0.15, 0.0}, {2.6, 0.2, 0.15}, {220, 220, 220}});  // carton
   SegmentationOptions whole;
   whole.objects.split = false;
   EXPECT_TRUE(Segment(scene, whole).objects.empty());
   const FrameSegmentation result = Segment(scene);
   ASSERT_EQ(result.objects.size(), 2u);
-  std::vector<SegmentedObject> objects = result.objects;
-  std::sort(objects.begin(), objects.end(),
-            [](const auto& a, const auto& b) { return a.range_m < b.range_m; });
-  EXPECT_NEAR(objects[0].centroid_level_m.x(), 2.06, 0.05);
-  EXPECT_NEAR(objects[0].centroid_level_m.y(), -0.015, 0.03);
-  EXPECT_NEAR(objects[0].height_m, 0.07, 0.02);
+  const std::vector<SegmentedObject> objects = NearestFirst(result);
+  ExpectTheCan(objects[0]);
   EXPECT_NEAR(objects[1].centroid_level_m.x(), 2.45, 0.1);
   EXPECT_NEAR(objects[1].centroid_level_m.y(), 0.025, 0.05);
   EXPECT_NEAR(objects[1].height_m, 0.15, 0.02);
@@ -144,16 +152,14 @@ TEST(FrameSegmenter, LitterTouchingLitterInTheImageIsCutApartInSpace) {
 // tall; the can's part is litter.
 TEST(FrameSegmenter, LitterBeforeATrunkIsFound) {
   SyntheticScene scene;
-  scene.boxes.push_back({{2.0, -0.05, 0.0}, {2.12, 0.02, 0.07}, {40, 40, 200}});  // can
-  scene.boxes.push_back({{2.3, -0.2, 0.0}, {2.6, 0.2, 1.5}, {30, 60, 90}});       // trunk
+  scene.boxes.push_back(kCan);
+  scene.boxes.push_back({{2.3, -0.2, 0.0}, {2.6, 0.2, 1.5}, {30, 60, 90}});  // trunk
   SegmentationOptions whole;
   whole.objects.split = false;
   EXPECT_TRUE(Segment(scene, whole).objects.empty());
   const FrameSegmentation result = Segment(scene);
   ASSERT_EQ(result.objects.size(), 1u);
-  EXPECT_NEAR(result.objects[0].centroid_level_m.x(), 2.06, 0.05);
-  EXPECT_NEAR(result.objects[0].centroid_level_m.y(), -0.015, 0.03);
-  EXPECT_NEAR(result.objects[0].height_m, 0.07, 0.02);
+  ExpectTheCan(result.objects[0]);
 }
 
 // A blob of more litter-sized parts than split_max_parts is taken for clutter (a bush's leaves,
