@@ -76,9 +76,6 @@ detect() {
   rm -rf "$run/crossval"
   "$littermap" detect "$run/bag" --run "$run/crossval_run" -o "$run/crossval" \
     --trajectory "$run/truth/trajectory.tum" --model "$model" "${options[@]}" --quiet >/dev/null
-  "$littermap" eval detections "$run/crossval/items.csv" "$run/truth/litter.csv" \
-    --natural "$run/truth/natural.csv" --visible "$run/truth/masks/visible.csv" --json \
-    >"$run/crossval/eval.json"
 }
 export -f detect
 export littermap work options_file
@@ -92,57 +89,64 @@ export littermap work options_file
   fi
 } | xargs -P "$jobs" -L 1 bash -c 'detect "$0" "$1"'
 
-python3 - "$work" "${seeds[@]}" <<'PY'
-import json, sys
-work, seeds = sys.argv[1], sys.argv[2:]
-print("%-5s %9s %6s %6s %14s %6s %6s %6s" % ("seed", "precision", "recall", "f1", "truth litter",
-                                             "tp", "fp", "fn"))
-tp = fp = fn = 0
-for seed in seeds:
-    m = json.load(open("%s/seed%s/crossval/eval.json" % (work, seed)))
-    tp += m["true_positives"]; fp += m["false_positives"]; fn += m["false_negatives"]
-    print("%-5s %9.3f %6.3f %6.3f %14d %6d %6d %6d" % (seed, m["precision"], m["recall"], m["f1"],
-          m["truth_litter"], m["true_positives"], m["false_positives"], m["false_negatives"]))
-p = tp / (tp + fp) if tp + fp else 1.0
-r = tp / (tp + fn) if tp + fn else 1.0
-f1 = 2 * p * r / (p + r) if p + r else 0.0
-print("%-5s %9.3f %6.3f %6.3f %14d %6d %6d %6d" % ("all", p, r, f1, tp + fn, tp, fp, fn))
-PY
-if [[ ${#thresholds[@]} -eq 0 ]]; then exit 0; fi
-
-# The totals at each threshold. An item that is litter at threshold t >= the run's is one whose
-# litter probability reaches t (its class is then the run's), so each row is what detect run
-# at t would have given; an item the run's threshold made natural stays natural above it.
-echo
-echo "item threshold sweep (the table above is at $lowest):"
+# Every seed's items scored as detected, then at each of THRESHOLDS (detect ran at the lowest). An
+# item that is litter at threshold t >= the run's is one whose litter probability reaches t (its
+# class is then the run's), so each sweep row is what detect run at t would have given; an item
+# the run's threshold made natural stays natural above it.
 python3 - "$littermap" "$work" "${thresholds[*]}" "${seeds[@]}" <<'PY'
 import csv, json, subprocess, sys
 littermap, work, thresholds, seeds = sys.argv[1], sys.argv[2], sys.argv[3].split(), sys.argv[4:]
-print("%-9s %9s %6s %6s %6s %6s %6s %s" % ("threshold", "precision", "recall", "f1", "tp", "fp",
-                                          "fn", "seeds with precision >= 0.95, recall >= 0.90"))
-for t in sorted(thresholds, key=float):
-    tp = fp = fn = good = 0
-    for seed in seeds:
-        run = "%s/seed%s" % (work, seed)
-        with open(run + "/crossval/items.csv") as f:
-            rows = list(csv.DictReader(f))
-        swept = run + "/crossval/items_at_threshold.csv"
-        with open(swept, "w", newline="") as f:
-            out = csv.DictWriter(f, fieldnames=list(rows[0].keys()) if rows else ["id"])
-            out.writeheader()
-            for row in rows:
-                if row["litter"] == "1" and float(row["litter_probability"]) < float(t):
-                    row["litter"], row["class"] = "0", "natural"
-                out.writerow(row)
-        m = json.loads(subprocess.run(
-            [littermap, "eval", "detections", swept, run + "/truth/litter.csv", "--natural",
-             run + "/truth/natural.csv", "--visible", run + "/truth/masks/visible.csv", "--json"],
-            check=True, capture_output=True, text=True).stdout)
-        tp += m["true_positives"]; fp += m["false_positives"]; fn += m["false_negatives"]
-        good += m["precision"] >= 0.95 and m["recall"] >= 0.90
+
+def score(run, items):
+    return json.loads(subprocess.run(
+        [littermap, "eval", "detections", items, run + "/truth/litter.csv", "--natural",
+         run + "/truth/natural.csv", "--visible", run + "/truth/masks/visible.csv", "--json"],
+        check=True, capture_output=True, text=True).stdout)
+
+def at_threshold(run, rows, t):
+    items = run + "/crossval/items_at_threshold.csv"
+    with open(items, "w", newline="") as f:
+        out = csv.DictWriter(f, fieldnames=list(rows[0].keys()) if rows else ["id"])
+        out.writeheader()
+        for row in rows:
+            row = dict(row)
+            if row["litter"] == "1" and float(row["litter_probability"]) < float(t):
+                row["litter"], row["class"] = "0", "natural"
+            out.writerow(row)
+    return score(run, items)
+
+def totals(metrics):
+    tp = sum(m["true_positives"] for m in metrics)
+    fp = sum(m["false_positives"] for m in metrics)
+    fn = sum(m["false_negatives"] for m in metrics)
     p = tp / (tp + fp) if tp + fp else 1.0
     r = tp / (tp + fn) if tp + fn else 1.0
-    f1 = 2 * p * r / (p + r) if p + r else 0.0
-    print("%-9s %9.3f %6.3f %6.3f %6d %6d %6d %d of %d" % (t, p, r, f1, tp, fp, fn, good,
-                                                          len(seeds)))
+    return p, r, 2 * p * r / (p + r) if p + r else 0.0, tp, fp, fn
+
+thresholds = sorted(thresholds, key=float)
+as_run, swept = [], {t: [] for t in thresholds}
+for seed in seeds:
+    run = "%s/seed%s" % (work, seed)
+    as_run.append(score(run, run + "/crossval/items.csv"))
+    with open(run + "/crossval/items.csv") as f:
+        rows = list(csv.DictReader(f))
+    for t in thresholds:
+        swept[t].append(at_threshold(run, rows, t))
+
+print("%-5s %9s %6s %6s %14s %6s %6s %6s" % ("seed", "precision", "recall", "f1", "truth litter",
+                                             "tp", "fp", "fn"))
+for seed, m in zip(seeds, as_run):
+    print("%-5s %9.3f %6.3f %6.3f %14d %6d %6d %6d" % (seed, m["precision"], m["recall"], m["f1"],
+          m["truth_litter"], m["true_positives"], m["false_positives"], m["false_negatives"]))
+p, r, f1, tp, fp, fn = totals(as_run)
+print("%-5s %9.3f %6.3f %6.3f %14d %6d %6d %6d" % ("all", p, r, f1, tp + fn, tp, fp, fn))
+if thresholds:
+    print("\nitem threshold sweep (the table above is at %s):" % thresholds[0])
+    print("%-9s %9s %6s %6s %6s %6s %6s %s" % ("threshold", "precision", "recall", "f1", "tp",
+                                              "fp", "fn",
+                                              "seeds with precision >= 0.95, recall >= 0.90"))
+    for t in thresholds:
+        good = sum(m["precision"] >= 0.95 and m["recall"] >= 0.90 for m in swept[t])
+        print("%-9s %9.3f %6.3f %6.3f %6d %6d %6d %d of %d" % ((t,) + totals(swept[t]) +
+                                                              (good, len(seeds))))
 PY
