@@ -185,6 +185,8 @@ const OptionSetters<O>& Setters() {
        Set<double>([](O& o) -> double& { return o.slam.gyro_edge_sigma_floor_rad; })},
       {"soft_edge_sigma_floor_rad",
        Set<double>([](O& o) -> double& { return o.slam.soft_edge_sigma_floor_rad; })},
+      {"gyro_turn_sigma_rad_per_sqrt_s",
+       Set<double>([](O& o) -> double& { return o.slam.gyro_turn_sigma_rad_per_sqrt_s; })},
       {"max_final_loop_chi2",
        Set<double>([](O& o) -> double& { return o.slam.max_final_loop_chi2; })},
       {"max_loop_residual_m",

@@ -122,7 +122,7 @@ std::vector<double> GraphDistances(std::size_t poses, const std::vector<PoseGrap
                                    const std::function<double(const PoseGraphEdge&)>& length) {
   std::vector<std::vector<std::pair<std::size_t, double>>> adjacent(poses);
   for (const PoseGraphEdge& edge : edges) {
-    if (edge.from >= poses || edge.to >= poses) continue;
+    if (edge.from >= poses || edge.to >= poses || edge.heading_only) continue;
     const double edge_length = length(edge);
     adjacent[edge.from].emplace_back(edge.to, edge_length);
     adjacent[edge.to].emplace_back(edge.from, edge_length);

@@ -26,6 +26,7 @@ struct PoseGraphEdge {
   // An edge to a key frame placed by odometry alone: the standard deviation of its heading by the
   // odometry model (zero for a matched edge, whose drift the matcher bounds per metre).
   double odometry_sigma_rad = 0;
+  bool heading_only = false;  // a gyro's turn between two key frames: no path between them
 };
 
 // Landmarks in the graph: 2D points, each sighting a range-bearing factor from its pose

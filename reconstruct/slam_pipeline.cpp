@@ -61,6 +61,9 @@ void SlamOptions::Validate() const {
   if (!(max_loop_residual_m > 0) || !(max_loop_residual_rad > 0)) {
     throw UsageError("slam: loop residual limits must be > 0");
   }
+  if (!(gyro_turn_sigma_rad_per_sqrt_s >= 0)) {
+    throw UsageError("slam: gyro_turn_sigma_rad_per_sqrt_s must be >= 0");
+  }
   if (!(max_final_loop_chi2 > 0)) throw UsageError("slam: max_final_loop_chi2 must be > 0");
   if (!(wide_loop_search_every_m > 0)) {
     throw UsageError("slam: wide_loop_search_every_m must be > 0");
@@ -159,7 +162,7 @@ void SlamPipeline::AddScan(const LaserScan& scan, const std::optional<GyroOdomet
                              (step.routine == Routine::kRgbd ? 1 : 0));
   StoreMapPoints(still_base ? *still_base : echoes_base);
   if (step.new_key_frame) {
-    if (step.key_frame > 0) AddGraphEdge(input, step);
+    if (step.key_frame > 0) AddGraphEdge(input, step, still_base.has_value());
     // A scan taken while a root or a kerb rocks the base cuts trunks off their usual circle.
     if (options_.landmarks &&
         !(tilt && tilt_rocking_.LatestRockingRad() > options_.landmark_max_rocking_rad)) {
@@ -195,7 +198,8 @@ void SlamPipeline::StoreMapPoints(const Points2& points_base) {
   }
 }
 
-void SlamPipeline::AddGraphEdge(const TrackInput& input, const TrackStep& step) {
+void SlamPipeline::AddGraphEdge(const TrackInput& input, const TrackStep& step,
+                                bool echoes_filtered) {
   const auto& frames = map_.key_frames();
   PoseGraphEdge edge;
   edge.from = step.key_frame - 1;
@@ -220,6 +224,20 @@ void SlamPipeline::AddGraphEdge(const TrackInput& input, const TrackStep& step) 
                                        options_.edge_sigma_floor_m, floor_rad);
   }
   edges_.push_back(edge);
+  if (options_.gyro_turn_sigma_rad_per_sqrt_s > 0 && echoes_filtered &&
+      GyroTurnedBetween(edge.from, edge.to)) {
+    const ScanRecord& a = scans_[frames[edge.from].scan_index];
+    const ScanRecord& b = scans_[frames[edge.to].scan_index];
+    PoseGraphEdge gyro;
+    gyro.from = edge.from;
+    gyro.to = edge.to;
+    gyro.heading_only = true;
+    gyro.T_from_to.theta_rad = WrapAngle(b.T_odom_base->theta_rad - a.T_odom_base->theta_rad);
+    const double sigma_rad = options_.gyro_turn_sigma_rad_per_sqrt_s *
+                             std::sqrt(std::max(ToSeconds(b.stamp_ns - a.stamp_ns), 1e-3));
+    gyro.information = Eigen::Vector3d(0, 0, 1 / (sigma_rad * sigma_rad)).asDiagonal();
+    edges_.push_back(gyro);
+  }
 }
 
 void SlamPipeline::CloseLoops(std::size_t key_frame, bool end_of_run) {
@@ -661,7 +679,9 @@ std::vector<PoseGraphEdge> SlamPipeline::KeyFrameOdometry() const {
   std::vector<PoseGraphEdge> odometry(frames.size() > 0 ? frames.size() - 1 : 0);
   std::vector<bool> found(odometry.size(), false);
   for (const PoseGraphEdge& edge : edges_) {
-    if (edge.loop || edge.to != edge.from + 1 || edge.to >= frames.size()) continue;
+    if (edge.loop || edge.heading_only || edge.to != edge.from + 1 || edge.to >= frames.size()) {
+      continue;
+    }
     odometry[edge.from] = edge;
     found[edge.from] = true;
   }

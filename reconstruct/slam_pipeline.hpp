@@ -60,6 +60,12 @@ struct SlamOptions {
   double edge_sigma_floor_rad = 0.01;
   double gyro_edge_sigma_floor_rad = 0.002;
   double soft_edge_sigma_floor_rad = 0.02;
+  // On hilly ground (where the moving-echo filter runs) the gyro's turn between consecutive key
+  // frames is a heading-only edge of its own, its standard deviation growing with the square root
+  // of the time between them (the gyro's angle random walk): the scan plane cuts the ground in arcs
+  // that run along the path, which the filter cannot tell from walls, and the matches turn with
+  // them by a tenth of a degree a second where the gyro does not. 0: no such edges.
+  double gyro_turn_sigma_rad_per_sqrt_s = 0.002;
   double odometry_sigma_m = 0.1;  // graph edge of an odometry-only key frame
   double odometry_sigma_rad = 0.05;
   bool loop_closure = true;
@@ -191,7 +197,8 @@ class SlamPipeline {
   const std::vector<LoopRecord>& loops() const { return loops_; }
 
  private:
-  void AddGraphEdge(const TrackInput& input, const TrackStep& step);
+  // echoes_filtered: the moving-echo filter ran on the key frame's scan (hilly ground).
+  void AddGraphEdge(const TrackInput& input, const TrackStep& step, bool echoes_filtered);
   // end_of_run: the last key frame, where a survey is back at its dock: a wide search however
   // little path there was since the last one, whatever the cooldown.
   void CloseLoops(std::size_t key_frame, bool end_of_run = false);

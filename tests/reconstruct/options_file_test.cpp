@@ -47,7 +47,8 @@ TEST(OptionsFile, SetsTheNamedOptions) {
                          "tilted_min_matching_ratio: 0.9\n"
                          "max_level_tilt_rad: 0.2\n"
                          "gyro_edge_sigma_floor_rad: 0.003\n"
-                         "soft_edge_sigma_floor_rad: 0.04\n"),
+                         "soft_edge_sigma_floor_rad: 0.04\n"
+                         "gyro_turn_sigma_rad_per_sqrt_s: 0\n"),
                    &options);
   EXPECT_EQ(options.slam.tracker.min_matching_ratio, 0.5);
   EXPECT_FALSE(options.rgbd);
@@ -66,6 +67,7 @@ TEST(OptionsFile, SetsTheNamedOptions) {
   EXPECT_EQ(options.slam.tracker.max_level_tilt_rad, 0.2);
   EXPECT_EQ(options.slam.gyro_edge_sigma_floor_rad, 0.003);
   EXPECT_EQ(options.slam.soft_edge_sigma_floor_rad, 0.04);
+  EXPECT_EQ(options.slam.gyro_turn_sigma_rad_per_sqrt_s, 0);
 }
 
 TEST(OptionsFile, AnEmptyFileKeepsTheDefaults) {
@@ -104,6 +106,10 @@ TEST(OptionsFile, OutOfRangeValuesFailValidation) {
   const std::filesystem::path floor = Write(dir, "soft_edge_sigma_floor_rad: 0\n");
   test::ExpectBadInput([&] { ApplyOptionsFile(floor, &options); },
                        "edge sigma floors, odometry and refinement hold sigmas must be > 0");
+  const std::filesystem::path gyro = Write(dir, "gyro_turn_sigma_rad_per_sqrt_s: -0.001\n");
+  ReconstructionOptions fresh;
+  test::ExpectBadInput([&] { ApplyOptionsFile(gyro, &fresh); },
+                       "gyro_turn_sigma_rad_per_sqrt_s must be >= 0");
   const std::filesystem::path nan = Write(dir, "max_correction_m: .nan\n");
   test::ExpectBadInput([&] { ApplyOptionsFile(nan, &options); },
                        nan.string() + ": option 'max_correction_m' must be a finite number");
