@@ -224,17 +224,19 @@ void SlamPipeline::AddGraphEdge(const TrackInput& input, const TrackStep& step,
                                        options_.edge_sigma_floor_m, floor_rad);
   }
   edges_.push_back(edge);
-  if (options_.gyro_turn_sigma_rad_per_sqrt_s > 0 && echoes_filtered &&
-      GyroTurnedBetween(edge.from, edge.to)) {
-    const ScanRecord& a = scans_[frames[edge.from].scan_index];
-    const ScanRecord& b = scans_[frames[edge.to].scan_index];
+  const std::optional<double> gyro_rad =
+      options_.gyro_turn_sigma_rad_per_sqrt_s > 0 && echoes_filtered
+          ? GyroTurnRad(edge.from, edge.to)
+          : std::nullopt;
+  if (gyro_rad) {
     PoseGraphEdge gyro;
     gyro.from = edge.from;
     gyro.to = edge.to;
     gyro.heading_only = true;
-    gyro.T_from_to.theta_rad = WrapAngle(b.T_odom_base->theta_rad - a.T_odom_base->theta_rad);
-    const double sigma_rad = options_.gyro_turn_sigma_rad_per_sqrt_s *
-                             std::sqrt(std::max(ToSeconds(b.stamp_ns - a.stamp_ns), 1e-3));
+    gyro.T_from_to.theta_rad = WrapAngle(*gyro_rad);
+    const double sigma_rad =
+        options_.gyro_turn_sigma_rad_per_sqrt_s *
+        std::sqrt(std::max(ToSeconds(frames[edge.to].stamp_ns - frames[edge.from].stamp_ns), 1e-3));
     gyro.information = Eigen::Vector3d(0, 0, 1 / (sigma_rad * sigma_rad)).asDiagonal();
     edges_.push_back(gyro);
   }
@@ -404,14 +406,20 @@ bool SlamPipeline::GyroTurnedBetween(std::size_t from, std::size_t to) const {
          scans_without_gyro_[b.scan_index] == scans_without_gyro_[a.scan_index];
 }
 
-bool SlamPipeline::GyroAgreesWithLoop(std::size_t from, std::size_t to, double heading_rad) const {
-  if (!GyroTurnedBetween(from, to)) return true;
+std::optional<double> SlamPipeline::GyroTurnRad(std::size_t from, std::size_t to) const {
+  if (!GyroTurnedBetween(from, to)) return std::nullopt;
   const auto& frames = map_.key_frames();
-  const ScanRecord& a = scans_[frames[from].scan_index];
-  const ScanRecord& b = scans_[frames[to].scan_index];
-  const double gyro_rad = b.T_odom_base->theta_rad - a.T_odom_base->theta_rad;
-  return std::abs(WrapAngle(heading_rad - gyro_rad)) <=
-         options_.loops.MaxGyroDisagreementRad(ToSeconds(b.stamp_ns - a.stamp_ns));
+  return scans_[frames[to].scan_index].T_odom_base->theta_rad -
+         scans_[frames[from].scan_index].T_odom_base->theta_rad;
+}
+
+bool SlamPipeline::GyroAgreesWithLoop(std::size_t from, std::size_t to, double heading_rad) const {
+  const std::optional<double> gyro_rad = GyroTurnRad(from, to);
+  if (!gyro_rad) return true;
+  const auto& frames = map_.key_frames();
+  return std::abs(WrapAngle(heading_rad - *gyro_rad)) <=
+         options_.loops.MaxGyroDisagreementRad(
+             ToSeconds(frames[to].stamp_ns - frames[from].stamp_ns));
 }
 
 void SlamPipeline::AddLoopEdge(const LoopAttempt& attempt) {

@@ -208,6 +208,9 @@ class SlamPipeline {
   void AddLoopEdge(const LoopAttempt& attempt);
   // The gyro turned every odometry step after key frame from's scan up to key frame to's.
   bool GyroTurnedBetween(std::size_t from, std::size_t to) const;
+  // The gyro's turn from key frame `from` to `to` (odometry heading, unwrapped), where it turned
+  // every step between them (GyroTurnedBetween); none otherwise.
+  std::optional<double> GyroTurnRad(std::size_t from, std::size_t to) const;
   // False where a gyro turned the odometry all the way from `from` to `to` (key frames) and the
   // loop's heading between them disagrees with the gyro's turn
   // (LoopCloserOptions::MaxGyroDisagreementRad); true where there is no such gyro to ask.

@@ -109,7 +109,7 @@ TEST(PoseGraph, HeadingOnlyEdgesHoldTheHeadingOfBiasedMatches) {
   EXPECT_GT(before, 0.2);
   // Weighted 16:1 against the matches, the gyro leaves a 17th of the bias: 6 % of the error.
   EXPECT_LT(after, 0.1 * before) << before << " -> " << after;
-  // The matches still place the poses along the path: the heading-only edges carry no distance.
+  // Over the whole square the gyro's turns hold the heading to the truth's three quarter turns.
   EXPECT_NEAR(held.back().theta_rad - held.front().theta_rad, truth.back().theta_rad, 0.01);
 }
 
