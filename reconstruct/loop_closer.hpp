@@ -101,9 +101,10 @@ struct LoopCloserOptions {
   // Where a gyro turned the odometry all the way between the two key frames, a loop's heading
   // between them must agree with the gyro's turn to within this floor plus this much per second
   // between them: a gyro's bias (0.0002 rad/s is 41 degrees an hour, an uncalibrated MEMS gyro's)
-  // turns its heading with time, not with the path. The path-based bound above allows a park
-  // survey's dock loop 47 degrees; the gyro, a few.
-  double max_gyro_disagreement_rad = 0.1;
+  // turns its heading with time, not with the path. The floor is twice the heading a gyro's
+  // angle random walk (0.002 rad/sqrt(s)) gathers over a minute. The path-based bound above allows
+  // a park survey's dock loop 47 degrees; the gyro, a few.
+  double max_gyro_disagreement_rad = 0.03;
   double max_gyro_disagreement_rad_per_s = 0.0002;
   double MaxGyroDisagreementRad(double elapsed_s) const {
     return max_gyro_disagreement_rad + max_gyro_disagreement_rad_per_s * elapsed_s;
