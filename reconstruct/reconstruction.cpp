@@ -17,6 +17,7 @@
 #include "bag/transform_tree.hpp"
 #include "core/error.hpp"
 #include "core/pose3.hpp"
+#include "reconstruct/frame_queue.hpp"
 #include "reconstruct/odometry_history.hpp"
 
 namespace littermap::reconstruct {
@@ -123,6 +124,12 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
   // A scan waits for the odometry reading after it (or until odometry is overdue), so its pose
   // is interpolated, not the last one before it.
   std::deque<std::pair<LaserScan, std::optional<Tilt>>> waiting;
+  FrameQueue frames_waiting;  // and so does a camera frame
+  const auto add_waiting_frames = [&](std::optional<TimestampNs> until_ns) {
+    for (OdometryFrame& ready : frames_waiting.TakeReady(odometry, until_ns)) {
+      rgbd->AddFrame(std::move(ready.frame), ready.T_odom_base);
+    }
+  };
   std::uint64_t done = 0;
   const std::string task = "reconstructing " + bag.filename().string();
   const auto track_waiting = [&](std::optional<TimestampNs> newest_scan_ns) {
@@ -131,6 +138,7 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
       const bool overdue =
           !newest_scan_ns || ToSeconds(*newest_scan_ns - stamp_ns) > options.max_odometry_age_s;
       if (!odometry.Covers(stamp_ns) && !overdue) return;
+      add_waiting_frames(stamp_ns);
       pipeline->AddScan(waiting.front().first, odometry.At(stamp_ns), waiting.front().second);
       waiting.pop_front();
       odometry.DropBefore(waiting.empty() ? stamp_ns : waiting.front().first.stamp_ns);
@@ -144,6 +152,7 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
       const PlanarPose T_odom_base{pose.position.x, pose.position.y,
                                    YawOf(bag::ToEigen(pose.orientation))};
       odometry.Add(stamp_ns, gyro.AddOdometry(stamp_ns, T_odom_base));
+      add_waiting_frames(std::nullopt);
       if (!waiting.empty()) track_waiting(waiting.back().first.stamp_ns);
       continue;
     }
@@ -163,9 +172,8 @@ ReconstructionResult ReconstructBag(const std::filesystem::path& bag,
               ? pairing.AddColour(std::move(*image), std::move(origin))
               : pairing.AddDepth(std::move(*image), std::move(origin));
       if (frame) {  // images are read only for an RGB-D tracker
-        const auto odometry_now = odometry.At(frame->stamp_ns);
-        rgbd->AddFrame(std::move(*frame),
-                       odometry_now ? std::optional(odometry_now->T_odom_base) : std::nullopt);
+        frames_waiting.Push(std::move(*frame));
+        add_waiting_frames(std::nullopt);
       }
       continue;
     }

@@ -93,7 +93,9 @@ TEST(ScanAlignment, DriftIsTakenOutAgainstTheScans) {
 
 // Two parallel walls 2 m apart and 200 m long, their ends out of the laser's range: nothing
 // along them to match.
-std::vector<test::Segment> Corridor() { return {{{-100, 0}, {100, 0}}, {{-100, 2}, {100, 2}}}; }
+std::vector<test::Segment> CorridorWalls() {
+  return {{{-100, 0}, {100, 0}}, {{-100, 2}, {100, 2}}};
+}
 
 TEST(ScanAlignment, TheOdometryKeepsWhatACorridorLeavesOpen) {
   std::vector<PlanarPose> truth;
@@ -106,8 +108,8 @@ TEST(ScanAlignment, TheOdometryKeepsWhatACorridorLeavesOpen) {
     poses[i].theta_rad += (i % 3 == 0 ? 0.5 : -0.5) * kDeg;
   }
   // The odometry is right, but weak against the walls.
-  const ScanAlignmentResult result =
-      AlignScans(KeyFramesSeenIn(Corridor(), truth), Odometry(truth, 0.05, 1 * kDeg), &poses, {});
+  const ScanAlignmentResult result = AlignScans(KeyFramesSeenIn(CorridorWalls(), truth),
+                                                Odometry(truth, 0.05, 1 * kDeg), &poses, {});
   ASSERT_TRUE(result.usable);
   for (std::size_t i = 0; i < poses.size(); ++i) {
     EXPECT_NEAR(poses[i].y_m, truth[i].y_m, 0.005) << i;  // the walls decide across
