@@ -35,6 +35,7 @@ void SlamOptions::Validate() const {
   moving_echoes.Validate();
   tracker.Validate();
   loops.Validate();
+  loop_consistency.Validate();
   graph.Validate();
   grid.Validate();
   alignment.Validate();
@@ -623,6 +624,7 @@ void SlamPipeline::Finish() {
   }
   if (tentative_loop_) DropTentativeLoop();  // no key frame is left to confirm it
   if (!unchecked_loops_.empty() || LandmarksInGraph()) Optimise();
+  if (DropInconsistentLoops()) Optimise();
   PruneFinalLoops();
   SettleLoopRecords();
   TallyLoops(loops_, &quality_);
@@ -668,6 +670,33 @@ void SlamPipeline::Finish() {
     const PlanarPose T_world_laser = Compose(scans_[i].T_world_base, T_base_laser_);
     grid_.InsertScan({T_world_laser.x_m, T_world_laser.y_m}, hits_of(i));
   }
+}
+
+bool SlamPipeline::DropInconsistentLoops() {
+  const auto& frames = map_.key_frames();
+  std::vector<double> path_length_m(frames.size());
+  for (std::size_t i = 0; i < frames.size(); ++i) path_length_m[i] = frames[i].path_length_m;
+  // A loop's strength is its match's overlay; a camera loop's alignment has none and counts as
+  // a full one.
+  std::vector<double> strength(edges_.size(), 1.0);
+  for (std::size_t i = 0; i < edges_.size(); ++i) {
+    const PoseGraphEdge& edge = edges_[i];
+    if (!edge.loop) continue;
+    for (const LoopRecord& record : loops_) {
+      if (record.outcome == LoopOutcome::kAccepted &&
+          (record.kind == LoopKind::kCamera) == edge.camera && record.from_key_frame == edge.from &&
+          record.to_key_frame == edge.to) {
+        strength[i] = record.matching_ratio.value_or(1.0);
+      }
+    }
+  }
+  const std::vector<std::size_t> drop = InconsistentLoops(
+      edges_, path_length_m, strength,
+      [this](std::size_t a, std::size_t b) { return GyroTurnedBetween(a, b); },
+      options_.loop_consistency);
+  for (std::size_t i : drop) edges_[i].information.setZero();  // SettleLoopRecords finds it gone
+  std::erase_if(edges_, [](const PoseGraphEdge& e) { return e.information.isZero(); });
+  return !drop.empty();
 }
 
 void SlamPipeline::PruneFinalLoops() {

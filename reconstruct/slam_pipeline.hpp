@@ -18,6 +18,7 @@
 #include "reconstruct/landmark_extraction.hpp"
 #include "reconstruct/landmark_map.hpp"
 #include "reconstruct/loop_closer.hpp"
+#include "reconstruct/loop_consistency.hpp"
 #include "reconstruct/loop_record.hpp"
 #include "reconstruct/moving_echo_filter.hpp"
 #include "reconstruct/occupancy_grid.hpp"
@@ -92,6 +93,9 @@ struct SlamOptions {
   // At the end, loops whose chi-squared in the optimised graph exceeds this are removed
   // (PruneLoops): the 95 % quantile with 3 degrees of freedom, the usual gate.
   double max_final_loop_chi2 = 7.81;
+  // At the end, before that check, loops that tie the same two stretches of the path must agree
+  // with each other (InconsistentLoops).
+  LoopConsistencyOptions loop_consistency;
   AlignmentMode alignment_mode = AlignmentMode::kAuto;
   ScanAlignmentOptions alignment;
   // Once the key frames are aligned, every other scan is aligned the same way against them, held
@@ -246,6 +250,9 @@ class SlamPipeline {
   void Optimise();
   // Keeps a scan's echoes for the final map (map_points_base_).
   void StoreMapPoints(const Points2& points_base);
+  // Drops the loops that disagree with other loops between the same stretches
+  // (InconsistentLoops); whether any was dropped.
+  bool DropInconsistentLoops();
   // The final check of the loops (PruneLoops), before the map is rendered.
   void PruneFinalLoops();
   // The final scan alignment (AlignScans), after the loops are settled.

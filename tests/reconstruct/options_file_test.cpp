@@ -48,7 +48,10 @@ TEST(OptionsFile, SetsTheNamedOptions) {
                          "max_level_tilt_rad: 0.2\n"
                          "gyro_edge_sigma_floor_rad: 0.003\n"
                          "soft_edge_sigma_floor_rad: 0.04\n"
-                         "gyro_turn_sigma_rad_per_sqrt_s: 0\n"),
+                         "gyro_turn_sigma_rad_per_sqrt_s: 0\n"
+                         "loop_consistency_max_stretch_m: 5\n"
+                         "loop_consistency_max_disagreement_m: 0.1\n"
+                         "loop_consistency_max_disagreement_rad: 0.02\n"),
                    &options);
   EXPECT_EQ(options.slam.tracker.min_matching_ratio, 0.5);
   EXPECT_FALSE(options.rgbd);
@@ -68,6 +71,9 @@ TEST(OptionsFile, SetsTheNamedOptions) {
   EXPECT_EQ(options.slam.gyro_edge_sigma_floor_rad, 0.003);
   EXPECT_EQ(options.slam.soft_edge_sigma_floor_rad, 0.04);
   EXPECT_EQ(options.slam.gyro_turn_sigma_rad_per_sqrt_s, 0);
+  EXPECT_EQ(options.slam.loop_consistency.max_stretch_m, 5);
+  EXPECT_EQ(options.slam.loop_consistency.max_disagreement_m, 0.1);
+  EXPECT_EQ(options.slam.loop_consistency.max_disagreement_rad, 0.02);
 }
 
 TEST(OptionsFile, AnEmptyFileKeepsTheDefaults) {
@@ -110,6 +116,10 @@ TEST(OptionsFile, OutOfRangeValuesFailValidation) {
   ReconstructionOptions fresh;
   test::ExpectBadInput([&] { ApplyOptionsFile(gyro, &fresh); },
                        "gyro_turn_sigma_rad_per_sqrt_s must be >= 0");
+  const std::filesystem::path stretch = Write(dir, "loop_consistency_max_stretch_m: -1\n");
+  ReconstructionOptions other;
+  test::ExpectBadInput([&] { ApplyOptionsFile(stretch, &other); },
+                       "loop consistency: the stretch and the disagreement bounds must be >= 0");
   const std::filesystem::path nan = Write(dir, "max_correction_m: .nan\n");
   test::ExpectBadInput([&] { ApplyOptionsFile(nan, &options); },
                        nan.string() + ": option 'max_correction_m' must be a finite number");
