@@ -14,11 +14,9 @@ class Stretches {
  public:
   Stretches(const std::vector<PoseGraphEdge>& edges, std::size_t poses) : steps_(poses) {
     for (const PoseGraphEdge& edge : edges) {
-      if (edge.loop || edge.heading_only || edge.to != edge.from + 1 || edge.to >= poses ||
-          steps_[edge.from]) {
-        continue;
+      if (IsTrackerStep(edge) && edge.to < poses && !steps_[edge.from]) {
+        steps_[edge.from] = edge.T_from_to;
       }
-      steps_[edge.from] = edge.T_from_to;
     }
   }
 

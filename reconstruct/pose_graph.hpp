@@ -29,6 +29,11 @@ struct PoseGraphEdge {
   bool heading_only = false;  // a gyro's turn between two key frames: no path between them
 };
 
+// The tracker's step from a key frame to the next: not a loop, not a gyro's turn alone.
+inline bool IsTrackerStep(const PoseGraphEdge& edge) {
+  return !edge.loop && !edge.heading_only && edge.to == edge.from + 1;
+}
+
 // Landmarks in the graph: 2D points, each sighting a range-bearing factor from its pose
 // (RangeBearingError) with a robust loss, so a wrong association pulls with a bounded force.
 struct LandmarkTerm {

@@ -28,6 +28,13 @@ bool LoopFits(const PoseGraphEdge& edge, const std::vector<PlanarPose>& poses,
          std::abs(residual.theta_rad) <= options.max_loop_residual_rad;
 }
 
+// Whether a loop edge of the graph is the one a record (a scan's or a camera's loop) added.
+bool IsEdgeOf(const PoseGraphEdge& edge, const LoopRecord& record) {
+  return edge.loop && record.kind != LoopKind::kLandmark &&
+         edge.camera == (record.kind == LoopKind::kCamera) && edge.from == record.from_key_frame &&
+         edge.to == record.to_key_frame;
+}
+
 }  // namespace
 
 void SlamOptions::Validate() const {
@@ -316,11 +323,8 @@ void SlamPipeline::DropTentativeLoop() {
 void SlamPipeline::SettleLoopRecords() {
   for (LoopRecord& record : loops_) {
     if (record.outcome != LoopOutcome::kAccepted || record.kind == LoopKind::kLandmark) continue;
-    const bool camera = record.kind == LoopKind::kCamera;
-    const bool in_graph = std::any_of(edges_.begin(), edges_.end(), [&](const PoseGraphEdge& e) {
-      return e.loop && e.camera == camera && e.from == record.from_key_frame &&
-             e.to == record.to_key_frame;
-    });
+    const bool in_graph = std::any_of(edges_.begin(), edges_.end(),
+                                      [&](const PoseGraphEdge& e) { return IsEdgeOf(e, record); });
     if (!in_graph) record.outcome = LoopOutcome::kRejectedAfterOptimisation;
   }
 }
@@ -683,9 +687,7 @@ bool SlamPipeline::DropInconsistentLoops() {
     const PoseGraphEdge& edge = edges_[i];
     if (!edge.loop) continue;
     for (const LoopRecord& record : loops_) {
-      if (record.outcome == LoopOutcome::kAccepted &&
-          (record.kind == LoopKind::kCamera) == edge.camera && record.from_key_frame == edge.from &&
-          record.to_key_frame == edge.to) {
+      if (record.outcome == LoopOutcome::kAccepted && IsEdgeOf(edge, record)) {
         strength[i] = record.matching_ratio.value_or(1.0);
       }
     }
@@ -716,9 +718,7 @@ std::vector<PoseGraphEdge> SlamPipeline::KeyFrameOdometry() const {
   std::vector<PoseGraphEdge> odometry(frames.size() > 0 ? frames.size() - 1 : 0);
   std::vector<bool> found(odometry.size(), false);
   for (const PoseGraphEdge& edge : edges_) {
-    if (edge.loop || edge.heading_only || edge.to != edge.from + 1 || edge.to >= frames.size()) {
-      continue;
-    }
+    if (!IsTrackerStep(edge) || edge.to >= frames.size()) continue;
     odometry[edge.from] = edge;
     found[edge.from] = true;
   }
