@@ -1,6 +1,8 @@
 #include "detect/item_fusion.hpp"
 
 #include <algorithm>
+#include <iterator>
+#include <numeric>
 
 #include "core/error.hpp"
 
@@ -23,18 +25,19 @@ ItemFusion::ItemFusion(FusionOptions options, std::size_t classes)
   options_.Validate();
 }
 
-void ItemFusion::KeepIfAmongTheLargest(Track& track, const Sighting& sighting) const {
+void ItemFusion::KeepIfAmongTheLargest(Track& track, int pixels,
+                                       const std::vector<double>& classes) const {
   auto& kept = track.class_views;
   if (options_.class_views == 0 || kept.size() < static_cast<std::size_t>(options_.class_views)) {
-    kept.emplace_back(sighting.pixels, sighting.class_probabilities);
+    kept.emplace_back(pixels, classes);
     return;
   }
   // Replace the smallest (the first of equals) when this sighting is larger.
   const auto smallest = std::min_element(
       kept.begin(), kept.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  if (sighting.pixels > smallest->first) {
-    smallest->first = sighting.pixels;
-    smallest->second = sighting.class_probabilities;
+  if (pixels > smallest->first) {
+    smallest->first = pixels;
+    smallest->second = classes;
   }
 }
 
@@ -66,9 +69,11 @@ int ItemFusion::Add(const Sighting& sighting) {
   track.weighted_sum += weight * sighting.position_world_m;
   track.weight += weight;
   track.size_sum += sighting.size_m;
-  KeepIfAmongTheLargest(track, sighting);
+  KeepIfAmongTheLargest(track, sighting.pixels, sighting.class_probabilities);
   ++track.views;
-  track.last_frame = sighting.frame;
+  if (track.seen_frames.empty() || track.seen_frames.back() != sighting.frame) {
+    track.seen_frames.push_back(sighting.frame);
+  }
   track.first_seen_ns = std::min(track.first_seen_ns, sighting.stamp_ns);
   track.last_seen_ns = std::max(track.last_seen_ns, sighting.stamp_ns);
   return static_cast<int>(best) + 1;
@@ -77,47 +82,111 @@ int ItemFusion::Add(const Sighting& sighting) {
 void ItemFusion::Observe(std::size_t frame,
                          const std::function<bool(const Eigen::Vector3d&, double)>& could_see) {
   for (Track& track : tracks_) {
-    if (track.last_frame != frame && could_see(track.mean(), track.size_sum / track.views)) {
-      ++track.missed_views;
+    const bool seen = !track.seen_frames.empty() && track.seen_frames.back() == frame;
+    if (!seen && could_see(track.mean(), track.size_sum / track.views)) {
+      track.missed_frames.push_back(frame);
     }
   }
 }
 
 bool ItemFusion::SeldomSeen(const Track& track) const {
-  return track.views < options_.min_seen_share * (track.views + track.missed_views);
+  const double chances = static_cast<double>(track.views + track.missed_frames.size());
+  return track.views < options_.min_seen_share * chances;
 }
 
-std::size_t ItemFusion::seldom_seen() const {
-  return static_cast<std::size_t>(std::count_if(
-      tracks_.begin(), tracks_.end(),
-      [&](const Track& t) { return t.views >= options_.min_views && SeldomSeen(t); }));
-}
-
-std::vector<LitterItem> ItemFusion::Items() const {
-  std::vector<LitterItem> items;
-  for (std::size_t i = 0; i < tracks_.size(); ++i) {
-    const Track& track = tracks_[i];
-    if (track.views < options_.min_views || SeldomSeen(track)) continue;
-    LitterItem item;
-    item.id = static_cast<int>(i) + 1;
-    item.position_world_m = track.mean();
-    item.size_m = track.size_sum / track.views;
-    item.views = track.views;
-    item.missed_views = track.missed_views;
-    item.first_seen_ns = track.first_seen_ns;
-    item.last_seen_ns = track.last_seen_ns;
-    item.class_probabilities.assign(classes_, 0.0);
-    for (const auto& [pixels, probabilities] : track.class_views) {
-      for (std::size_t k = 0; k < classes_; ++k) item.class_probabilities[k] += probabilities[k];
-    }
-    for (double& p : item.class_probabilities) p /= static_cast<double>(track.class_views.size());
-    item.best_class = static_cast<std::size_t>(
-        std::max_element(item.class_probabilities.begin(), item.class_probabilities.end()) -
-        item.class_probabilities.begin());
-    item.confidence = item.class_probabilities[item.best_class];
-    items.push_back(std::move(item));
+void ItemFusion::Merge(Track& into, const Track& from) const {
+  into.weighted_sum += from.weighted_sum;
+  into.weight += from.weight;
+  into.size_sum += from.size_sum;
+  into.views += from.views;
+  for (const auto& [pixels, classes] : from.class_views) {
+    KeepIfAmongTheLargest(into, pixels, classes);
   }
-  return items;
+  std::vector<std::size_t> seen, missed, missed_unseen;
+  std::set_union(into.seen_frames.begin(), into.seen_frames.end(), from.seen_frames.begin(),
+                 from.seen_frames.end(), std::back_inserter(seen));
+  std::set_union(into.missed_frames.begin(), into.missed_frames.end(), from.missed_frames.begin(),
+                 from.missed_frames.end(), std::back_inserter(missed));
+  // A frame that missed one of the two but saw the other saw the merged item.
+  std::set_difference(missed.begin(), missed.end(), seen.begin(), seen.end(),
+                      std::back_inserter(missed_unseen));
+  into.seen_frames = std::move(seen);
+  into.missed_frames = std::move(missed_unseen);
+  into.first_seen_ns = std::min(into.first_seen_ns, from.first_seen_ns);
+  into.last_seen_ns = std::max(into.last_seen_ns, from.last_seen_ns);
+}
+
+LitterItem ItemFusion::MakeItem(const Track& track, int id) const {
+  LitterItem item;
+  item.id = id;
+  item.position_world_m = track.mean();
+  item.size_m = track.size_sum / track.views;
+  item.views = track.views;
+  item.missed_views = static_cast<int>(track.missed_frames.size());
+  item.first_seen_ns = track.first_seen_ns;
+  item.last_seen_ns = track.last_seen_ns;
+  item.class_probabilities.assign(classes_, 0.0);
+  for (const auto& [pixels, probabilities] : track.class_views) {
+    for (std::size_t k = 0; k < classes_; ++k) item.class_probabilities[k] += probabilities[k];
+  }
+  for (double& p : item.class_probabilities) p /= static_cast<double>(track.class_views.size());
+  item.best_class = static_cast<std::size_t>(
+      std::max_element(item.class_probabilities.begin(), item.class_probabilities.end()) -
+      item.class_probabilities.begin());
+  item.confidence = item.class_probabilities[item.best_class];
+  return item;
+}
+
+FusedItems ItemFusion::Fuse() const {
+  FusedItems fused;
+  std::vector<Track> tracks = tracks_;
+  std::vector<bool> merged(tracks.size(), false);
+  fused.item_of_candidate.resize(tracks.size());
+  std::iota(fused.item_of_candidate.begin(), fused.item_of_candidate.end(), 1);
+  const double radius = options_.association_radius_m;
+  while (true) {
+    // The closest pair within the radius, found by a sweep over the candidates sorted by x.
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0; i < tracks.size(); ++i) {
+      if (!merged[i]) order.push_back(i);
+    }
+    std::vector<Eigen::Vector2d> at(tracks.size());
+    for (const std::size_t i : order) at[i] = tracks[i].mean().head<2>();
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return at[a].x() < at[b].x(); });
+    double closest = radius;
+    std::size_t keep = 0, absorb = 0;
+    bool found = false;
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      for (std::size_t j = i + 1; j < order.size(); ++j) {
+        if (at[order[j]].x() - at[order[i]].x() > radius) break;
+        const double distance = (at[order[i]] - at[order[j]]).norm();
+        if (distance <= closest) {
+          closest = distance;
+          keep = std::min(order[i], order[j]);
+          absorb = std::max(order[i], order[j]);
+          found = true;
+        }
+      }
+    }
+    if (!found) break;
+    Merge(tracks[keep], tracks[absorb]);
+    merged[absorb] = true;
+    ++fused.merged;
+    for (int& item : fused.item_of_candidate) {
+      if (item == static_cast<int>(absorb) + 1) item = static_cast<int>(keep) + 1;
+    }
+  }
+  for (std::size_t i = 0; i < tracks.size(); ++i) {
+    const Track& track = tracks[i];
+    if (merged[i] || track.views < options_.min_views) continue;
+    if (SeldomSeen(track)) {
+      ++fused.seldom_seen;
+      continue;
+    }
+    fused.items.push_back(MakeItem(track, static_cast<int>(i) + 1));
+  }
+  return fused;
 }
 
 }  // namespace littermap::detect

@@ -6,6 +6,12 @@
 // bottle at the far edge of the range is a dozen pixels, where a root top or a flower looks much
 // like it). Items seen in too few frames are dropped: one frame's segmentation error does not
 // become an item.
+//
+// Which candidate a sighting joins depends on the order of the sightings: a bag seen in fragments
+// that scatter over 0.3 m becomes one candidate or two as the first two fragments happen to fall
+// within the radius or just outside it. So at the end, candidates whose positions lie within the
+// association radius of each other are merged, the closest pair first, as any order of their
+// sightings could have joined them.
 
 #include <functional>
 #include <string>
@@ -45,6 +51,16 @@ struct LitterItem {
   double seen_share() const { return double(views) / double(views + missed_views); }
 };
 
+// What Fuse gives: the items, and for detections.csv the item each candidate became part of.
+struct FusedItems {
+  std::vector<LitterItem> items;
+  // Indexed by candidate id - 1 (the ids Add returned): the id of the candidate it was merged
+  // into, its own id when it was not merged. Ids of candidates left out of `items` stay.
+  std::vector<int> item_of_candidate;
+  std::size_t seldom_seen = 0;  // candidates with enough views left out for their seen share
+  std::size_t merged = 0;       // candidates merged into a neighbour
+};
+
 struct FusionOptions {
   double association_radius_m = 0.25;
   int min_views = 3;
@@ -72,18 +88,18 @@ struct FusionOptions {
 class ItemFusion {
  public:
   ItemFusion(FusionOptions options, std::size_t classes);
-  // Returns the id of the item the sighting joined or started: ids count from 1 in order of first
-  // sighting, and an item keeps its id in Items() (the ids of candidates it leaves out are unused).
+  // Returns the id of the candidate the sighting joined or started: ids count from 1 in order of
+  // first sighting, and an item keeps the id of its first candidate in Fuse() (the ids of
+  // candidates it leaves out or merges are unused there).
   int Add(const Sighting& sighting);
   // After a frame's sightings were added: every item the frame did not see although
   // `could_see(position_world_m, size_m)` says it could have counts a missed view.
   void Observe(std::size_t frame,
                const std::function<bool(const Eigen::Vector3d&, double)>& could_see);
-  // Items with at least min_views views and the seen share, with the ids Add returned; their
-  // best_class is the likeliest class, to be decided (LitterClassifier::Decide) by the caller.
-  std::vector<LitterItem> Items() const;
-  // Candidates with enough views that Items() leaves out for their seen share.
-  std::size_t seldom_seen() const;
+  // Merges neighbouring candidates, then keeps those with at least min_views views and the seen
+  // share, with the ids Add returned; their best_class is the likeliest class, to be decided
+  // (LitterClassifier::Decide) by the caller.
+  FusedItems Fuse() const;
   std::size_t candidates() const { return tracks_.size(); }
 
  private:
@@ -93,13 +109,16 @@ class ItemFusion {
     double size_sum = 0;
     // The class_views largest sightings: pixels and class probabilities.
     std::vector<std::pair<int, std::vector<double>>> class_views;
-    int views = 0, missed_views = 0;
-    std::size_t last_frame = 0;
+    int views = 0;
+    // Ascending frame indices: frames with a sighting, and frames that could see it without one.
+    std::vector<std::size_t> seen_frames, missed_frames;
     TimestampNs first_seen_ns = 0, last_seen_ns = 0;
     Eigen::Vector3d mean() const { return weighted_sum / weight; }
   };
   bool SeldomSeen(const Track& track) const;
-  void KeepIfAmongTheLargest(Track& track, const Sighting& sighting) const;
+  void KeepIfAmongTheLargest(Track& track, int pixels, const std::vector<double>& classes) const;
+  void Merge(Track& into, const Track& from) const;
+  LitterItem MakeItem(const Track& track, int id) const;
   FusionOptions options_;
   std::size_t classes_;
   std::vector<Track> tracks_;

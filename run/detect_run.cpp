@@ -38,15 +38,15 @@ DetectRunResult DetectRun(const std::filesystem::path& bag, const std::filesyste
       bag, trajectory, objects, progress,
       [&](const detect::PlacedObject& placed) {
         const detect::Classification c = classifier.Classify(placed.sample);
-        long item = -1;
+        int candidate = -1;
         if (c.best != clutter) {
           detect::Sighting sighting{placed.frame->index,     placed.frame->stamp_ns,
                                     placed.position_world_m, placed.object->size_m,
                                     placed.object->range_m,  placed.object->pixels,
                                     c.probabilities};
-          item = fusion.Add(sighting);
+          candidate = fusion.Add(sighting);
         }
-        detections.Write(placed, classifier.classes()[c.best], c, item);
+        detections.Write(placed, classifier.classes()[c.best], c, candidate);
       },
       [&](const detect::ProcessedFrame& processed) {
         const detect::FrameVisibility view(processed, visibility);
@@ -55,17 +55,18 @@ DetectRunResult DetectRun(const std::filesystem::path& bag, const std::filesyste
         });
         if (on_frame) on_frame(processed);
       });
-  detections.Close();
-  std::vector<detect::LitterItem> fused = fusion.Items();
-  for (detect::LitterItem& item : fused) {
+  detect::FusedItems fused = fusion.Fuse();
+  detections.Close(fused.item_of_candidate);
+  for (detect::LitterItem& item : fused.items) {
     item.best_class =
         classifier.Decide(item.class_probabilities, options.fusion.min_litter_probability);
     item.confidence = item.class_probabilities[item.best_class];
   }
-  const ItemsWritten items = WriteItemsCsv(output.items(), fused, classifier);
+  const ItemsWritten items = WriteItemsCsv(output.items(), fused.items, classifier);
   result.litter_items = items.litter;
   result.natural_objects = items.natural;
-  result.seldom_seen = fusion.seldom_seen();
+  result.seldom_seen = fused.seldom_seen;
+  result.merged = fused.merged;
   if (result.objects.frames_without_pose > 0) {
     result.warnings.push_back(std::to_string(result.objects.frames_without_pose) +
                               " frames lay outside the trajectory and were skipped");
@@ -74,14 +75,14 @@ DetectRunResult DetectRun(const std::filesystem::path& bag, const std::filesyste
 }
 
 std::string DetectSummary(const DetectRunResult& result, const detect::FusionOptions& fusion) {
-  char figures[320];
+  char figures[400];
   std::snprintf(figures, sizeof figures,
                 "%zu frames, %zu objects, %zu litter items and %zu natural objects seen in >= %d "
                 "views and >= %.0f%% of the frames that could see them; %zu seen in fewer were "
-                "dropped",
+                "dropped, %zu merged with a neighbour within %.2f m",
                 result.objects.frames, result.objects.objects, result.litter_items,
                 result.natural_objects, fusion.min_views, 100 * fusion.min_seen_share,
-                result.seldom_seen);
+                result.seldom_seen, result.merged, fusion.association_radius_m);
   return "wrote " + result.output_dir.string() + ": " + figures + "\n" +
          SegmentationTimeLine(result.objects);
 }

@@ -35,6 +35,7 @@ struct DetectRunResult {
   std::size_t litter_items = 0;      // in items.csv
   std::size_t natural_objects = 0;
   std::size_t seldom_seen = 0;        // candidates dropped for their seen share (min_seen_share)
+  std::size_t merged = 0;             // candidates merged into a neighbour within the radius
   std::vector<std::string> warnings;  // for the user's attention
 };
 

@@ -46,13 +46,14 @@ TEST(DetectSummary, CountsItemsAndTimesTheSegmentationPerFrame) {
   result.litter_items = 2;
   result.natural_objects = 1;
   result.seldom_seen = 5;
+  result.merged = 1;
   EXPECT_EQ(SegmentationTimeLine(result.objects),
             "segmentation 21.0 ms/frame (cloud+normals 10.0, components 2.0, ground 1.0, "
             "texture+graph cut 5.0, objects 3.0)");
   EXPECT_EQ(DetectSummary(result, detect::FusionOptions{0.25, 3, 0.75}),
             "wrote out/run: 4 frames, 9 objects, 2 litter items and 1 natural objects seen in "
             ">= 3 views and >= 75% of the frames that could see them; 5 seen in fewer were "
-            "dropped\n" +
+            "dropped, 1 merged with a neighbour within 0.25 m\n" +
                 SegmentationTimeLine(result.objects));
 }
 
