@@ -24,6 +24,7 @@ enum class LoopOutcome {
   kRejectedDisagreement,       // its correction is more than the drift can explain
   kRejectedDegenerate,         // the match left the pose free in some direction
   kRejectedAfterOptimisation,  // the optimised graph could not satisfy it
+  kRejectedInconsistent,       // it disagreed with other loops between the same stretches
   kUnconfirmed,                // tentative, and no later key frame confirmed it
   kTentative,                  // awaiting its confirmation (never in a finished run's record)
 };
@@ -66,6 +67,8 @@ constexpr std::string_view LoopOutcomeName(LoopOutcome outcome) {
       return "rejected_degenerate";
     case LoopOutcome::kRejectedAfterOptimisation:
       return "rejected_after_optimisation";
+    case LoopOutcome::kRejectedInconsistent:
+      return "rejected_inconsistent";
     case LoopOutcome::kUnconfirmed:
       return "unconfirmed";
     case LoopOutcome::kTentative:

@@ -333,7 +333,7 @@ void TallyLoops(const std::vector<LoopRecord>& records, SlamQuality* quality) {
   SlamQuality& q = *quality;
   q.loop_candidates = q.loops_accepted = q.loops_rejected_match = 0;
   q.loops_rejected_disagreement = q.loops_rejected_degenerate = 0;
-  q.loops_rejected_after_optimisation = q.loops_confirmed = 0;
+  q.loops_rejected_after_optimisation = q.loops_rejected_inconsistent = q.loops_confirmed = 0;
   q.landmark_loops_found = q.landmark_loops_accepted = q.landmark_loops_rejected = 0;
   q.camera_loops_found = q.camera_loops_accepted = q.camera_loops_rejected = 0;
   for (const LoopRecord& record : records) {
@@ -359,6 +359,9 @@ void TallyLoops(const std::vector<LoopRecord>& records, SlamQuality* quality) {
             break;
           case LoopOutcome::kRejectedAfterOptimisation:
             ++q.loops_rejected_after_optimisation;
+            break;
+          case LoopOutcome::kRejectedInconsistent:
+            ++q.loops_rejected_inconsistent;
             break;
         }
         break;
@@ -696,7 +699,14 @@ bool SlamPipeline::DropInconsistentLoops() {
       edges_, path_length_m, strength,
       [this](std::size_t a, std::size_t b) { return GyroTurnedBetween(a, b); },
       options_.loop_consistency);
-  for (std::size_t i : drop) edges_[i].information.setZero();  // SettleLoopRecords finds it gone
+  for (const std::size_t i : drop) {
+    for (LoopRecord& record : loops_) {
+      if (record.outcome == LoopOutcome::kAccepted && IsEdgeOf(edges_[i], record)) {
+        record.outcome = LoopOutcome::kRejectedInconsistent;
+      }
+    }
+    edges_[i].information.setZero();
+  }
   std::erase_if(edges_, [](const PoseGraphEdge& e) { return e.information.isZero(); });
   return !drop.empty();
 }

@@ -149,10 +149,11 @@ struct SlamQuality {
   std::size_t loops_rejected_disagreement = 0;
   std::size_t loops_rejected_degenerate = 0;  // the match left the pose free in some direction
   std::size_t loops_rejected_after_optimisation = 0;
-  // The four rejections above together.
+  std::size_t loops_rejected_inconsistent = 0;  // disagreed with other loops (InconsistentLoops)
+  // The five rejections above together.
   std::size_t loops_rejected() const {
     return loops_rejected_match + loops_rejected_disagreement + loops_rejected_degenerate +
-           loops_rejected_after_optimisation;
+           loops_rejected_after_optimisation + loops_rejected_inconsistent;
   }
   // Tentative matches the next key frames confirmed (LoopCloserOptions::
   // confirm_within_key_frames): each brings two accepted loops, itself and its confirmation.

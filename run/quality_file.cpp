@@ -83,6 +83,7 @@ Json SlamJson(const ReconstructionQuality& q) {
   json["loop_closures_rejected_disagreement"] = q.loop_closures_rejected_disagreement;
   json["loop_closures_rejected_degenerate"] = q.loop_closures_rejected_degenerate;
   json["loop_closures_rejected_after_optimisation"] = q.loop_closures_rejected_after_optimisation;
+  json["loop_closures_rejected_inconsistent"] = q.loop_closures_rejected_inconsistent;
   json["loop_closures_confirmed"] = q.loop_closures_confirmed;
   json["landmarks"] = LandmarksJson(q.landmarks);
   json["optimisations"] = q.optimisations;
@@ -174,6 +175,7 @@ void ReadCounts(const Json& json, ReconstructionQuality& q) {
   Read(json, "loop_closures_rejected_degenerate", q.loop_closures_rejected_degenerate);
   Read(json, "loop_closures_rejected_after_optimisation",
        q.loop_closures_rejected_after_optimisation);
+  Read(json, "loop_closures_rejected_inconsistent", q.loop_closures_rejected_inconsistent);
   Read(json, "loop_closures_confirmed", q.loop_closures_confirmed);
   Read(json, "optimisations", q.optimisations);
   Read(json, "final_cost", q.final_cost);

@@ -64,11 +64,12 @@ struct ReconstructionQuality {
   std::vector<std::pair<std::string, std::size_t>> routines;  // scans per routine, file order
   std::size_t loop_closures_found = 0;
   std::size_t loop_closures_accepted = 0;
-  std::size_t loop_closures_rejected = 0;  // the four below together
+  std::size_t loop_closures_rejected = 0;  // the five below together
   std::size_t loop_closures_rejected_match = 0;
   std::size_t loop_closures_rejected_disagreement = 0;
   std::size_t loop_closures_rejected_degenerate = 0;
   std::size_t loop_closures_rejected_after_optimisation = 0;
+  std::size_t loop_closures_rejected_inconsistent = 0;  // disagreed with other loops
   // Accepted loops that confirmed a tentative match (each brings that match in too).
   std::size_t loop_closures_confirmed = 0;
   LandmarkQuality landmarks;

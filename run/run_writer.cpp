@@ -114,6 +114,7 @@ ReconstructionQuality SlamRunQuality(const SlamQuality& quality, const Reconstru
   q.loop_closures_rejected_disagreement = quality.loops_rejected_disagreement;
   q.loop_closures_rejected_degenerate = quality.loops_rejected_degenerate;
   q.loop_closures_rejected_after_optimisation = quality.loops_rejected_after_optimisation;
+  q.loop_closures_rejected_inconsistent = quality.loops_rejected_inconsistent;
   q.loop_closures_confirmed = quality.loops_confirmed;
   q.loop_closures_rejected = quality.loops_rejected();
   q.landmarks = {quality.landmarks,

@@ -50,9 +50,12 @@ TEST(SlamPipeline, LoopCountersAreTheSumsOfTheRecords) {
       record(K::kScan, O::kRejectedDegenerate),
       record(K::kScan, O::kRejectedDegenerate),
       record(K::kScan, O::kRejectedAfterOptimisation, true),  // confirmed, pruned at the end
+      record(K::kScan, O::kRejectedInconsistent),
+      record(K::kScan, O::kRejectedInconsistent),
       record(K::kCamera, O::kAccepted),
       record(K::kCamera, O::kRejectedDisagreement),
       record(K::kCamera, O::kRejectedAfterOptimisation),
+      record(K::kCamera, O::kRejectedInconsistent),
       record(K::kLandmark, O::kAccepted),
       record(K::kLandmark, O::kAccepted),
       record(K::kLandmark, O::kRejectedAfterOptimisation),
@@ -60,17 +63,18 @@ TEST(SlamPipeline, LoopCountersAreTheSumsOfTheRecords) {
   SlamQuality q;
   q.loops_accepted = 99;  // whatever was there before is replaced
   TallyLoops(records, &q);
-  EXPECT_EQ(q.loop_candidates, 10u);
+  EXPECT_EQ(q.loop_candidates, 12u);
   EXPECT_EQ(q.loops_accepted, 3u);
   EXPECT_EQ(q.loops_rejected_match, 3u);  // an unconfirmed match is a rejected one
   EXPECT_EQ(q.loops_rejected_disagreement, 1u);
   EXPECT_EQ(q.loops_rejected_degenerate, 2u);
   EXPECT_EQ(q.loops_rejected_after_optimisation, 1u);
-  EXPECT_EQ(q.loops_rejected(), 7u);
+  EXPECT_EQ(q.loops_rejected_inconsistent, 2u);
+  EXPECT_EQ(q.loops_rejected(), 9u);
   EXPECT_EQ(q.loops_confirmed, 2u);
-  EXPECT_EQ(q.camera_loops_found, 3u);
+  EXPECT_EQ(q.camera_loops_found, 4u);
   EXPECT_EQ(q.camera_loops_accepted, 1u);
-  EXPECT_EQ(q.camera_loops_rejected, 2u);
+  EXPECT_EQ(q.camera_loops_rejected, 3u);
   EXPECT_EQ(q.landmark_loops_found, 3u);
   EXPECT_EQ(q.landmark_loops_accepted, 2u);
   EXPECT_EQ(q.landmark_loops_rejected, 1u);

@@ -41,6 +41,7 @@ constexpr const char* kSlamText = R"json({
   "loop_closures_rejected_disagreement": 3,
   "loop_closures_rejected_degenerate": 2,
   "loop_closures_rejected_after_optimisation": 3,
+  "loop_closures_rejected_inconsistent": 0,
   "loop_closures_confirmed": 1,
   "landmarks": {
     "in_graph": 38,
@@ -104,6 +105,7 @@ constexpr const char* kRgbdText = R"json({
   "loop_closures_rejected_disagreement": 0,
   "loop_closures_rejected_degenerate": 0,
   "loop_closures_rejected_after_optimisation": 0,
+  "loop_closures_rejected_inconsistent": 0,
   "loop_closures_confirmed": 0,
   "landmarks": {
     "in_graph": 4,
