@@ -151,7 +151,11 @@ FusedItems ItemFusion::Fuse() const {
       if (!merged[i]) order.push_back(i);
     }
     std::vector<Eigen::Vector2d> at(tracks.size());
-    for (const std::size_t i : order) at[i] = tracks[i].mean().head<2>();
+    std::vector<std::size_t> kind(tracks.size());  // the likeliest class
+    for (const std::size_t i : order) {
+      at[i] = tracks[i].mean().head<2>();
+      kind[i] = MakeItem(tracks[i], 0).best_class;
+    }
     std::sort(order.begin(), order.end(),
               [&](std::size_t a, std::size_t b) { return at[a].x() < at[b].x(); });
     double closest = radius;
@@ -161,7 +165,7 @@ FusedItems ItemFusion::Fuse() const {
       for (std::size_t j = i + 1; j < order.size(); ++j) {
         if (at[order[j]].x() - at[order[i]].x() > radius) break;
         const double distance = (at[order[i]] - at[order[j]]).norm();
-        if (distance <= closest) {
+        if (distance <= closest && kind[order[i]] == kind[order[j]]) {
           closest = distance;
           keep = std::min(order[i], order[j]);
           absorb = std::max(order[i], order[j]);

@@ -170,6 +170,26 @@ TEST(ItemFusion, CandidatesWithinTheRadiusOfEachOtherBecomeOneItem) {
   }
 }
 
+// A cup 0.21 m from a plastic bag, kept apart by the order of their sightings, stays apart: their
+// likeliest classes differ. The same sightings of one kind become one item.
+TEST(ItemFusion, NeighboursOfDifferentClassesStayApart) {
+  const auto fuse = [](const std::vector<double>& second) {
+    ItemFusion fusion({0.25, 1}, 2);
+    const std::vector<double> first = {0.9, 0.1};
+    fusion.Add(At(0.0, 0, first));
+    fusion.Add(At(0.26, 0, second));
+    fusion.Add(At(0.05, 0, first));
+    fusion.Add(At(0.21, 0, second));  // the candidates' means now 0.21 m apart
+    return fusion.Fuse();
+  };
+  const FusedItems apart = fuse({0.2, 0.8});
+  ASSERT_EQ(apart.items.size(), 2u);
+  EXPECT_EQ(apart.merged, 0u);
+  EXPECT_EQ(apart.items[0].best_class, 0u);
+  EXPECT_EQ(apart.items[1].best_class, 1u);
+  EXPECT_EQ(fuse({0.8, 0.2}).items.size(), 1u);
+}
+
 // Two cans 0.4 m apart stay two items, and a frame that saw one of two merged candidates saw the
 // merged item: its missed views are the frames that saw neither.
 TEST(ItemFusion, MergingKeepsDistinctItemsAndCountsMissedViewsOfTheWhole) {
