@@ -116,6 +116,20 @@ void ItemFusion::Merge(Track& into, const Track& from) const {
   into.last_seen_ns = std::max(into.last_seen_ns, from.last_seen_ns);
 }
 
+std::vector<double> ItemFusion::ClassProbabilities(const Track& track) const {
+  std::vector<double> mean(classes_, 0.0);
+  for (const auto& [pixels, probabilities] : track.class_views) {
+    for (std::size_t k = 0; k < classes_; ++k) mean[k] += probabilities[k];
+  }
+  for (double& p : mean) p /= static_cast<double>(track.class_views.size());
+  return mean;
+}
+
+std::size_t ItemFusion::Likeliest(const std::vector<double>& probabilities) {
+  return static_cast<std::size_t>(std::max_element(probabilities.begin(), probabilities.end()) -
+                                  probabilities.begin());
+}
+
 LitterItem ItemFusion::MakeItem(const Track& track, int id) const {
   LitterItem item;
   item.id = id;
@@ -125,14 +139,8 @@ LitterItem ItemFusion::MakeItem(const Track& track, int id) const {
   item.missed_views = static_cast<int>(track.missed_frames.size());
   item.first_seen_ns = track.first_seen_ns;
   item.last_seen_ns = track.last_seen_ns;
-  item.class_probabilities.assign(classes_, 0.0);
-  for (const auto& [pixels, probabilities] : track.class_views) {
-    for (std::size_t k = 0; k < classes_; ++k) item.class_probabilities[k] += probabilities[k];
-  }
-  for (double& p : item.class_probabilities) p /= static_cast<double>(track.class_views.size());
-  item.best_class = static_cast<std::size_t>(
-      std::max_element(item.class_probabilities.begin(), item.class_probabilities.end()) -
-      item.class_probabilities.begin());
+  item.class_probabilities = ClassProbabilities(track);
+  item.best_class = Likeliest(item.class_probabilities);
   item.confidence = item.class_probabilities[item.best_class];
   return item;
 }
@@ -144,17 +152,18 @@ FusedItems ItemFusion::Fuse() const {
   fused.item_of_candidate.resize(tracks.size());
   std::iota(fused.item_of_candidate.begin(), fused.item_of_candidate.end(), 1);
   const double radius = options_.association_radius_m;
+  std::vector<Eigen::Vector2d> at(tracks.size());
+  std::vector<std::size_t> kind(tracks.size());  // the likeliest class
+  const auto describe = [&](std::size_t i) {
+    at[i] = tracks[i].mean().head<2>();
+    kind[i] = Likeliest(ClassProbabilities(tracks[i]));
+  };
+  for (std::size_t i = 0; i < tracks.size(); ++i) describe(i);
   while (true) {
     // The closest pair within the radius, found by a sweep over the candidates sorted by x.
     std::vector<std::size_t> order;
     for (std::size_t i = 0; i < tracks.size(); ++i) {
       if (!merged[i]) order.push_back(i);
-    }
-    std::vector<Eigen::Vector2d> at(tracks.size());
-    std::vector<std::size_t> kind(tracks.size());  // the likeliest class
-    for (const std::size_t i : order) {
-      at[i] = tracks[i].mean().head<2>();
-      kind[i] = MakeItem(tracks[i], 0).best_class;
     }
     std::sort(order.begin(), order.end(),
               [&](std::size_t a, std::size_t b) { return at[a].x() < at[b].x(); });
@@ -175,6 +184,7 @@ FusedItems ItemFusion::Fuse() const {
     }
     if (!found) break;
     Merge(tracks[keep], tracks[absorb]);
+    describe(keep);
     merged[absorb] = true;
     ++fused.merged;
     for (int& item : fused.item_of_candidate) {

@@ -119,6 +119,9 @@ class ItemFusion {
   bool SeldomSeen(const Track& track) const;
   void KeepIfAmongTheLargest(Track& track, int pixels, const std::vector<double>& classes) const;
   void Merge(Track& into, const Track& from) const;
+  // The mean of the track's class views, and the index of the largest probability.
+  std::vector<double> ClassProbabilities(const Track& track) const;
+  static std::size_t Likeliest(const std::vector<double>& probabilities);
   LitterItem MakeItem(const Track& track, int id) const;
   FusionOptions options_;
   std::size_t classes_;

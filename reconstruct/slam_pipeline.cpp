@@ -600,17 +600,13 @@ void SlamPipeline::Optimise() {
   ++quality_.optimisations;
   // Consistency after optimisation: a loop the graph cannot satisfy is taken out again, and the
   // graph optimised without it (false loops must not stay in).
-  bool removed = false;
+  std::vector<std::size_t> unfit;  // SettleLoopRecords finds them gone
   for (std::size_t index : unchecked_loops_) {
-    PoseGraphEdge& edge = edges_[index];
-    if (!result.usable || !LoopFits(edge, poses, options_)) {
-      edge.information.setZero();  // marked for removal (SettleLoopRecords finds it gone)
-      removed = true;
-    }
+    if (!result.usable || !LoopFits(edges_[index], poses, options_)) unfit.push_back(index);
   }
   unchecked_loops_.clear();
-  if (removed) {
-    std::erase_if(edges_, [](const PoseGraphEdge& e) { return e.information.isZero(); });
+  if (!unfit.empty()) {
+    EraseEdges(unfit);
     poses = before;
     terms = BuildLandmarkTerms();
     result = OptimizePoseGraph(&poses, edges_, options_.graph, &terms);
@@ -683,14 +679,15 @@ bool SlamPipeline::DropInconsistentLoops() {
   const auto& frames = map_.key_frames();
   std::vector<double> path_length_m(frames.size());
   for (std::size_t i = 0; i < frames.size(); ++i) path_length_m[i] = frames[i].path_length_m;
-  // A loop's strength is its match's overlay; a camera loop's alignment has none and counts as
-  // a full one.
+  // Each loop edge's accepted record, and its strength: the match's overlay (a camera loop's
+  // alignment has none and counts as a full one).
+  std::vector<LoopRecord*> record_of(edges_.size(), nullptr);
   std::vector<double> strength(edges_.size(), 1.0);
   for (std::size_t i = 0; i < edges_.size(); ++i) {
-    const PoseGraphEdge& edge = edges_[i];
-    if (!edge.loop) continue;
-    for (const LoopRecord& record : loops_) {
-      if (record.outcome == LoopOutcome::kAccepted && IsEdgeOf(edge, record)) {
+    if (!edges_[i].loop) continue;
+    for (LoopRecord& record : loops_) {
+      if (record.outcome == LoopOutcome::kAccepted && IsEdgeOf(edges_[i], record)) {
+        record_of[i] = &record;
         strength[i] = record.matching_ratio.value_or(1.0);
       }
     }
@@ -700,15 +697,20 @@ bool SlamPipeline::DropInconsistentLoops() {
       [this](std::size_t a, std::size_t b) { return GyroTurnedBetween(a, b); },
       options_.loop_consistency);
   for (const std::size_t i : drop) {
-    for (LoopRecord& record : loops_) {
-      if (record.outcome == LoopOutcome::kAccepted && IsEdgeOf(edges_[i], record)) {
-        record.outcome = LoopOutcome::kRejectedInconsistent;
-      }
-    }
-    edges_[i].information.setZero();
+    if (record_of[i]) record_of[i]->outcome = LoopOutcome::kRejectedInconsistent;
   }
-  std::erase_if(edges_, [](const PoseGraphEdge& e) { return e.information.isZero(); });
+  EraseEdges(drop);
   return !drop.empty();
+}
+
+void SlamPipeline::EraseEdges(const std::vector<std::size_t>& indices) {
+  std::vector<bool> erase(edges_.size(), false);
+  for (const std::size_t i : indices) erase[i] = true;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < edges_.size(); ++i) {
+    if (!erase[i]) edges_[kept++] = std::move(edges_[i]);
+  }
+  edges_.resize(kept);
 }
 
 void SlamPipeline::PruneFinalLoops() {

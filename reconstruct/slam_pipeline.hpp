@@ -254,6 +254,8 @@ class SlamPipeline {
   // Drops the loops that disagree with other loops between the same stretches
   // (InconsistentLoops); whether any was dropped.
   bool DropInconsistentLoops();
+  // Removes the edges at these indices of edges_, keeping the others in order.
+  void EraseEdges(const std::vector<std::size_t>& indices);
   // The final check of the loops (PruneLoops), before the map is rendered.
   void PruneFinalLoops();
   // The final scan alignment (AlignScans), after the loops are settled.
