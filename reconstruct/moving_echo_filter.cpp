@@ -1,5 +1,6 @@
 #include "reconstruct/moving_echo_filter.hpp"
 
+#include <algorithm>
 #include <utility>
 
 #include "core/error.hpp"
@@ -7,10 +8,10 @@
 namespace littermap::reconstruct {
 
 void MovingEchoFilterOptions::Validate() const {
-  if (!(min_interval_s > 0) || !(static_tolerance_m > 0) || !(static_tolerance_per_m >= 0) ||
-      !(max_shift_m > static_tolerance_m)) {
+  if (!(min_interval_s > 0) || !(long_interval_s >= 0) || !(static_tolerance_m > 0) ||
+      !(static_tolerance_per_m >= 0) || !(max_shift_m > static_tolerance_m)) {
     throw UsageError(
-        "moving echoes: need min_interval_s > 0, static_tolerance_m > 0, "
+        "moving echoes: need min_interval_s > 0, long_interval_s >= 0, static_tolerance_m > 0, "
         "static_tolerance_per_m >= 0 and max_shift_m > static_tolerance_m");
   }
   if (!(min_relief_m >= 0) || !(relief_window_m > 0)) {
@@ -25,44 +26,56 @@ MovingEchoFilter::MovingEchoFilter(const MovingEchoFilterOptions& options) : opt
   options_.Validate();
 }
 
-MovingEchoFilter::Earlier* MovingEchoFilter::Reference(TimestampNs stamp_ns) {
-  while (earlier_.size() >= 2 &&
-         ToSeconds(stamp_ns - earlier_[1].stamp_ns) >= options_.min_interval_s) {
+void MovingEchoFilter::Forget(TimestampNs stamp_ns) {
+  const double keep_s = std::max(options_.min_interval_s, options_.long_interval_s);
+  while (earlier_.size() >= 2 && ToSeconds(stamp_ns - earlier_[1].stamp_ns) >= keep_s) {
     earlier_.pop_front();
   }
-  return !earlier_.empty() &&
-                 ToSeconds(stamp_ns - earlier_.front().stamp_ns) >= options_.min_interval_s
-             ? &earlier_.front()
-             : nullptr;
+}
+
+MovingEchoFilter::Earlier* MovingEchoFilter::Reference(TimestampNs stamp_ns, double interval_s) {
+  for (auto it = earlier_.rbegin(); it != earlier_.rend(); ++it) {
+    if (ToSeconds(stamp_ns - it->stamp_ns) >= interval_s) return &*it;
+  }
+  return nullptr;
+}
+
+bool MovingEchoFilter::Moved(Earlier& earlier, const PlanarPose& T_earlier_now,
+                             const Eigen::Vector2d& p) const {
+  if (!earlier.echoes) {
+    earlier.echoes = std::make_shared<const IcpTarget>(earlier.points_base, Points2{});
+  }
+  const double tolerance = options_.static_tolerance_m + options_.static_tolerance_per_m * p.norm();
+  const double max_sq = options_.max_shift_m * options_.max_shift_m;
+  std::size_t index = 0;
+  double distance_sq = 0;
+  return earlier.echoes->NearestWithin(Transform(T_earlier_now, p), max_sq, &index, &distance_sq) &&
+         distance_sq > tolerance * tolerance && distance_sq < max_sq;
 }
 
 void MovingEchoFilter::Remember(TimestampNs stamp_ns, const PlanarPose& T_odom_base,
                                 Points2 points_base) {
-  Reference(stamp_ns);  // drops the scans no later one will compare with
+  Forget(stamp_ns);
   earlier_.push_back({stamp_ns, T_odom_base, std::move(points_base), nullptr});
 }
 
 MovingEchoResult MovingEchoFilter::Filter(TimestampNs stamp_ns, const PlanarPose& T_odom_base,
                                           Points2 points_base) {
-  Earlier* reference = Reference(stamp_ns);
+  Forget(stamp_ns);
+  Earlier* recent = Reference(stamp_ns, options_.min_interval_s);
+  Earlier* older =
+      options_.long_interval_s > 0 ? Reference(stamp_ns, options_.long_interval_s) : nullptr;
+  if (older == recent) older = nullptr;
   MovingEchoResult result;
-  if (reference == nullptr) {
+  if (recent == nullptr) {
     result.points_base = points_base;
   } else {
-    if (!reference->echoes) {
-      reference->echoes = std::make_shared<const IcpTarget>(reference->points_base, Points2{});
-    }
-    const PlanarPose T_earlier_now = Between(reference->T_odom_base, T_odom_base);
-    const double max_sq = options_.max_shift_m * options_.max_shift_m;
+    const PlanarPose T_recent_now = Between(recent->T_odom_base, T_odom_base);
+    const PlanarPose T_older_now =
+        older != nullptr ? Between(older->T_odom_base, T_odom_base) : PlanarPose{};
     result.points_base.reserve(points_base.size());
     for (const Eigen::Vector2d& p : points_base) {
-      const double tolerance =
-          options_.static_tolerance_m + options_.static_tolerance_per_m * p.norm();
-      std::size_t index = 0;
-      double distance_sq = 0;
-      if (reference->echoes->NearestWithin(Transform(T_earlier_now, p), max_sq, &index,
-                                           &distance_sq) &&
-          distance_sq > tolerance * tolerance && distance_sq < max_sq) {
+      if (Moved(*recent, T_recent_now, p) || (older != nullptr && Moved(*older, T_older_now, p))) {
         ++result.moving;
         continue;
       }

@@ -3,12 +3,12 @@
 // pitches in a dip, the scan plane cuts the ground along a long arc that follows the robot: ICP
 // locks onto it, and the pose sticks or turns with it. The tilt alone cannot predict these arcs
 // (ScanToPoints drops only the ground under a tilted scanner), but the odometry can expose them:
-// brought into an earlier scan's frame by the odometry between the two, a static echo lands on the
-// earlier scan's echoes, a moving arc lands a little beside them. Those are dropped; a scan that
-// is mostly such echoes is given up (the laser hits the ground: thesis 2.5), so the tracker falls
-// back on its other routines. Over a quarter of a second wheels turned by a gyro are far more
-// precise than the shifts looked for; wheels alone can slip by degrees, so without a gyro (and
-// without a tilt: indoors, CARMEN logs) the filter is not used.
+// brought into the frames of earlier scans (a quarter of a second and a second older) by the
+// odometry between them, a static echo lands on their echoes, a moving arc lands a little beside
+// them. Those are dropped; a scan that is mostly such echoes is given up (the laser hits the
+// ground: thesis 2.5), so the tracker falls back on its other routines. Over a second wheels
+// turned by a gyro are far more precise than the shifts looked for; wheels alone can slip by
+// degrees, so without a gyro (and without a tilt: indoors, CARMEN logs) the filter is not used.
 
 #include <cstddef>
 #include <deque>
@@ -33,6 +33,13 @@ struct MovingEchoFilterOptions {
   double min_relief_m = 0.4;
   double relief_window_m = 40;
   double min_interval_s = 0.25;  // the earlier scan compared with is at least this much older
+  // Each scan is also compared with one at least this much older (0: not). A ridge beside the
+  // path that the robot drives obliquely across is a line of echoes parallel to the path: it
+  // slides along itself, where no shift shows, and creeps across by a few centimetres in a
+  // quarter of a second, within the tolerance. Over a second it has crept 10-20 cm, and ICP,
+  // which pulls the scan onto the line where the map has it, would slide the pose sideways with
+  // it (park_large's west valley: 0.46 m across 25 s, with the one-scan comparison alone).
+  double long_interval_s = 1.0;
   // A static echo lies within this distance of the earlier scan's (noise, beam spacing at range).
   double static_tolerance_m = 0.06;
   double static_tolerance_per_m = 0.004;
@@ -67,8 +74,12 @@ class MovingEchoFilter {
     Points2 points_base;
     std::shared_ptr<const IcpTarget> echoes;  // KD-tree over the points, built when first needed
   };
-  // The newest kept scan at least min_interval_s older than stamp_ns, if any; older ones go.
-  Earlier* Reference(TimestampNs stamp_ns);
+  // The newest kept scan at least interval_s older than stamp_ns, if any.
+  Earlier* Reference(TimestampNs stamp_ns, double interval_s);
+  // Drops the scans no later one will compare with.
+  void Forget(TimestampNs stamp_ns);
+  // Whether p (in the scan's base frame) lies beside an echo of the earlier scan.
+  bool Moved(Earlier& earlier, const PlanarPose& T_earlier_now, const Eigen::Vector2d& p) const;
   MovingEchoFilterOptions options_;
   std::deque<Earlier> earlier_;
 };

@@ -53,6 +53,8 @@ const OptionSetters<O>& Setters() {
                             [](O& o) -> MovingEchoMode& { return o.slam.moving_echoes.mode; })},
       {"moving_echo_min_relief_m",
        Set<double>([](O& o) -> double& { return o.slam.moving_echoes.min_relief_m; })},
+      {"moving_echo_long_interval_s",
+       Set<double>([](O& o) -> double& { return o.slam.moving_echoes.long_interval_s; })},
       {"moving_echo_max_fraction",
        Set<double>([](O& o) -> double& { return o.slam.moving_echoes.max_moving_fraction; })},
       {"icp_point_to_line",

@@ -114,6 +114,52 @@ TEST(MovingEchoFilter, ANewlySeenObjectIsNotMoving) {
   }
 }
 
+// Scan i of the robot of ScanAt, seeing the trunks and, beside its path, the ridge of a hill that
+// the robot drives obliquely across: where the scan plane cuts the slope, a line of echoes
+// parallel to the path, 2 m behind to 2 m ahead of the robot, that creeps towards the path by
+// 0.15 m every second (y = 6 - 0.15 t in the world) while sliding along itself.
+Step ScanBesideACreepingRidge(int i) {
+  const double t = i * kScanPeriodS;
+  Step step = ScanAt(i, 0);
+  const PlanarPose T_base_world = Inverse(step.T_odom_base);
+  for (double ahead = -2; ahead <= 2; ahead += 0.02) {
+    step.points_base.push_back(
+        Transform(T_base_world, Eigen::Vector2d(step.T_odom_base.x_m + ahead, 6 - 0.15 * t)));
+  }
+  return step;
+}
+
+TEST(MovingEchoFilter, ARidgeThatCreepsTowardsThePathIsDroppedOverASecond) {
+  // Over a quarter of a second the ridge moves 4 cm across itself, within the tolerance of a
+  // static echo 6 m away; over a second, 15 cm: beyond it.
+  for (const double long_interval_s : {0.0, MovingEchoFilterOptions{}.long_interval_s}) {
+    MovingEchoFilterOptions options;
+    options.long_interval_s = long_interval_s;
+    MovingEchoFilter filter(options);
+    for (int i = 0; i < 80; ++i) {
+      Step step = ScanBesideACreepingRidge(i);
+      const PlanarPose T_world_base = step.T_odom_base;
+      const MovingEchoResult result =
+          filter.Filter(step.stamp_ns, step.T_odom_base, std::move(step.points_base));
+      std::size_t ridge_kept = 0;
+      std::size_t trunks_kept = 0;
+      for (const Eigen::Vector2d& p : result.points_base) {
+        ++(Transform(T_world_base, p).y() > 5 ? ridge_kept : trunks_kept);
+      }
+      EXPECT_EQ(trunks_kept, Trunks().size()) << "scan " << i;
+      if (long_interval_s == 0 || i * kScanPeriodS < 1.0) {
+        // All of its 201 echoes but the few at its front end, beside the earlier front end.
+        EXPECT_GE(ridge_kept, 190u) << "scan " << i << ", long interval " << long_interval_s;
+        EXPECT_FALSE(result.given_up);
+      } else {
+        // All of it but the few echoes ahead of what the robot saw a second ago, new to the view.
+        EXPECT_LE(ridge_kept, 10u) << "scan " << i;
+        EXPECT_TRUE(result.given_up);  // most of the scan's echoes moved
+      }
+    }
+  }
+}
+
 TEST(MovingEchoFilter, RejectsBadOptions) {
   MovingEchoFilterOptions options;
   options.max_shift_m = options.static_tolerance_m;
@@ -123,6 +169,9 @@ TEST(MovingEchoFilter, RejectsBadOptions) {
   EXPECT_THROW(MovingEchoFilter{options}, UsageError);
   options = {};
   options.min_interval_s = 0;
+  EXPECT_THROW(MovingEchoFilter{options}, UsageError);
+  options = {};
+  options.long_interval_s = -1;
   EXPECT_THROW(MovingEchoFilter{options}, UsageError);
 }
 
