@@ -212,6 +212,8 @@ void SlamPipeline::AddGraphEdge(const TrackInput& input, const TrackStep& step,
   PoseGraphEdge edge;
   edge.from = step.key_frame - 1;
   edge.to = step.key_frame;
+  const bool through_camera = scans_by_camera_[frames[edge.to].scan_index] !=
+                              scans_by_camera_[frames[edge.from].scan_index];
   edge.T_from_to = Between(frames[edge.from].T_world_base, frames[edge.to].T_world_base);
   if (step.routine == Routine::kOdometryOnly) {
     edge.information = DiagonalInformation(options_.odometry_sigma_m, options_.odometry_sigma_rad);
@@ -222,8 +224,6 @@ void SlamPipeline::AddGraphEdge(const TrackInput& input, const TrackStep& step,
                               PredictionOf(step.odometry_used, input.heading_from_gyro));
     edge.odometry_sigma_rad = 1 / std::sqrt(model(2, 2));
   } else {
-    const bool through_camera = scans_by_camera_[frames[edge.to].scan_index] !=
-                                scans_by_camera_[frames[edge.from].scan_index];
     const double floor_rad = through_camera ? options_.soft_edge_sigma_floor_rad
                              : GyroTurnedBetween(edge.from, edge.to)
                                  ? options_.gyro_edge_sigma_floor_rad
@@ -233,7 +233,7 @@ void SlamPipeline::AddGraphEdge(const TrackInput& input, const TrackStep& step,
   }
   edges_.push_back(edge);
   const std::optional<double> gyro_rad =
-      options_.gyro_turn_sigma_rad_per_sqrt_s > 0 && echoes_filtered
+      options_.gyro_turn_sigma_rad_per_sqrt_s > 0 && (echoes_filtered || through_camera)
           ? GyroTurnRad(edge.from, edge.to)
           : std::nullopt;
   if (gyro_rad) {

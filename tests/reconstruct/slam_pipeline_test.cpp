@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -226,6 +227,65 @@ SlamOptions OutAndBackOptions() {
   options.loops.search_radius_m = 1;
   options.wide_loop_search_every_m = 1000;
   return options;
+}
+
+// Routine 3 through a stand-in for the RGB-D tracker that finds the camera where the odometry
+// predicted it: every scan the laser cannot place, the camera does.
+class CameraAtThePrediction final : public RgbdFallback {
+ public:
+  std::optional<PlanarPose> AlignAt(const TrackInput&, const PlanarPose& T_world_base_predicted,
+                                    const KeyFrameMap&) override {
+    return T_world_base_predicted;
+  }
+  void OnTracked(const TrackInput&, const TrackStep&, const KeyFrameMap&) override {}
+};
+
+// The heading-only edges of a run's final graph.
+std::vector<PoseGraphEdge> GyroTurnEdges(const SlamPipeline& pipeline) {
+  std::vector<PoseGraphEdge> turns;
+  std::copy_if(pipeline.edges().begin(), pipeline.edges().end(), std::back_inserter(turns),
+               [](const PoseGraphEdge& edge) { return edge.heading_only; });
+  return turns;
+}
+
+// The steps the camera placed took their path through poses their information does not speak for
+// (a soft heading floor, so that a loop's correction goes there rather than where the laser
+// held), but a gyro turned them: on flat ground too, each such step gets the gyro's turn as an
+// edge of its own. Steps the odometry alone placed, or wheels without a gyro, get none.
+TEST(SlamPipeline, StepsTheCameraPlacedKeepTheGyrosTurn) {
+  CameraAtThePrediction camera;
+  SlamPipeline with_camera(OutAndBackOptions(), {}, &camera);
+  DriveOutAndBack(&with_camera, 0.02, 0, true);
+  std::size_t placed_by_camera = 0;
+  for (const ScanRecord& record : with_camera.scans()) {
+    placed_by_camera += record.routine == Routine::kRgbd ? 1 : 0;
+  }
+  EXPECT_GE(placed_by_camera, 90u);  // the blind legs and turns
+  const std::vector<PoseGraphEdge> turns = GyroTurnEdges(with_camera);
+  EXPECT_GE(turns.size(), 40u);
+  // Each is the odometry's (the gyro's) turn between its key frames.
+  const auto odometry_heading = [&](std::size_t key_frame) {
+    for (const ScanRecord& record : with_camera.scans()) {
+      if (record.key_frame == key_frame && record.T_odom_base) {
+        return record.T_odom_base->theta_rad;
+      }
+    }
+    ADD_FAILURE() << "no scan of key frame " << key_frame;
+    return 0.0;
+  };
+  for (const PoseGraphEdge& turn : turns) {
+    EXPECT_NEAR(WrapAngle(turn.T_from_to.theta_rad -
+                          (odometry_heading(turn.to) - odometry_heading(turn.from))),
+                0, 1e-9);
+  }
+
+  SlamPipeline odometry_alone(OutAndBackOptions(), {});
+  DriveOutAndBack(&odometry_alone, 0.02, 0, true);
+  EXPECT_TRUE(GyroTurnEdges(odometry_alone).empty());
+  CameraAtThePrediction camera_without_gyro;
+  SlamPipeline wheels_alone(OutAndBackOptions(), {}, &camera_without_gyro);
+  DriveOutAndBack(&wheels_alone, 0.02, 0, false);
+  EXPECT_TRUE(GyroTurnEdges(wheels_alone).empty());
 }
 
 // A survey that comes home after a long stretch the laser saw nothing of, placed by odometry that
