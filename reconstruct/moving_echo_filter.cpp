@@ -40,17 +40,20 @@ MovingEchoFilter::Earlier* MovingEchoFilter::Reference(TimestampNs stamp_ns, dou
   return nullptr;
 }
 
-bool MovingEchoFilter::Moved(Earlier& earlier, const PlanarPose& T_earlier_now,
-                             const Eigen::Vector2d& p) const {
+const IcpTarget& MovingEchoFilter::EchoesOf(Earlier& earlier) {
   if (!earlier.echoes) {
     earlier.echoes = std::make_shared<const IcpTarget>(earlier.points_base, Points2{});
   }
-  const double tolerance = options_.static_tolerance_m + options_.static_tolerance_per_m * p.norm();
+  return *earlier.echoes;
+}
+
+bool MovingEchoFilter::Beside(const IcpTarget& echoes, const Eigen::Vector2d& p_earlier,
+                              double tolerance_sq) const {
   const double max_sq = options_.max_shift_m * options_.max_shift_m;
   std::size_t index = 0;
   double distance_sq = 0;
-  return earlier.echoes->NearestWithin(Transform(T_earlier_now, p), max_sq, &index, &distance_sq) &&
-         distance_sq > tolerance * tolerance && distance_sq < max_sq;
+  return echoes.NearestWithin(p_earlier, max_sq, &index, &distance_sq) &&
+         distance_sq > tolerance_sq && distance_sq < max_sq;
 }
 
 void MovingEchoFilter::Remember(TimestampNs stamp_ns, const PlanarPose& T_odom_base,
@@ -70,12 +73,19 @@ MovingEchoResult MovingEchoFilter::Filter(TimestampNs stamp_ns, const PlanarPose
   if (recent == nullptr) {
     result.points_base = points_base;
   } else {
+    const IcpTarget& recent_echoes = EchoesOf(*recent);
+    const IcpTarget* older_echoes = older != nullptr ? &EchoesOf(*older) : nullptr;
     const PlanarPose T_recent_now = Between(recent->T_odom_base, T_odom_base);
     const PlanarPose T_older_now =
         older != nullptr ? Between(older->T_odom_base, T_odom_base) : PlanarPose{};
     result.points_base.reserve(points_base.size());
     for (const Eigen::Vector2d& p : points_base) {
-      if (Moved(*recent, T_recent_now, p) || (older != nullptr && Moved(*older, T_older_now, p))) {
+      const double tolerance =
+          options_.static_tolerance_m + options_.static_tolerance_per_m * p.norm();
+      const double tolerance_sq = tolerance * tolerance;
+      if (Beside(recent_echoes, Transform(T_recent_now, p), tolerance_sq) ||
+          (older_echoes != nullptr &&
+           Beside(*older_echoes, Transform(T_older_now, p), tolerance_sq))) {
         ++result.moving;
         continue;
       }

@@ -78,8 +78,11 @@ class MovingEchoFilter {
   Earlier* Reference(TimestampNs stamp_ns, double interval_s);
   // Drops the scans no later one will compare with.
   void Forget(TimestampNs stamp_ns);
-  // Whether p (in the scan's base frame) lies beside an echo of the earlier scan.
-  bool Moved(Earlier& earlier, const PlanarPose& T_earlier_now, const Eigen::Vector2d& p) const;
+  // The earlier scan's echoes, their KD-tree built on first use.
+  static const IcpTarget& EchoesOf(Earlier& earlier);
+  // Whether an echo, brought into an earlier scan's frame (p_earlier), lies beside that scan's
+  // echoes: further than the static tolerance from the nearest, closer than max_shift_m.
+  bool Beside(const IcpTarget& echoes, const Eigen::Vector2d& p_earlier, double tolerance_sq) const;
   MovingEchoFilterOptions options_;
   std::deque<Earlier> earlier_;
 };
